@@ -1,0 +1,56 @@
+// The Accelerator interface: built once over a scene's primitives, it answers
+// closest-hit and any-hit queries. Every implementation must return the same
+// closest hit (t and primitive) as brute force on any ray.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/params.h"
+#include "core/ray.h"
+#include "scene/geometry.h"
+
+namespace ll {
+
+// Per-query work, accumulated by the caller (one instance per thread or tile).
+struct QueryCounters {
+  uint64_t nodesVisited = 0;
+  uint64_t primitivesTested = 0;
+  void add(const QueryCounters& o) {
+    nodesVisited += o.nodesVisited;
+    primitivesTested += o.primitivesTested;
+  }
+};
+
+struct AcceleratorStats {
+  double buildSeconds = 0.0;
+  size_t memoryBytes = 0;  // of the structure itself, not the geometry
+  size_t nodeCount = 0;
+  int depth = 0;
+};
+
+class Accelerator {
+ public:
+  virtual ~Accelerator() = default;
+  // Builds over `geometry`, which must outlive the accelerator.
+  virtual void build(const Geometry& geometry) = 0;
+  // Closest hit with ray.tmin < t < ray.tmax; on success fills hit and returns true.
+  virtual bool intersect(const Ray& ray, Hit& hit, QueryCounters& counters) const = 0;
+  // Whether anything is hit with ray.tmin < t < ray.tmax (may stop at the first).
+  virtual bool occluded(const Ray& ray, QueryCounters& counters) const = 0;
+  virtual AcceleratorStats stats() const = 0;
+};
+
+// What the registry knows about an accelerator: its name, help, parameters
+// and a factory. One per implementation file.
+struct AcceleratorInfo {
+  std::string name;
+  std::string help;
+  std::vector<ParamDecl> params;
+  std::unique_ptr<Accelerator> (*make)(const ParamSet& params) = nullptr;
+};
+
+}  // namespace ll

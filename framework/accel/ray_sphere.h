@@ -1,0 +1,40 @@
+// Numerically careful ray/sphere intersection (Haines et al., "Precision
+// Improvements for Ray/Sphere Intersection", Ray Tracing Gems ch. 7): the
+// discriminant is formed from the distance of the centre to the ray's line,
+// and the near root uses the stable quadratic form, so far-away and tiny
+// spheres keep their precision.
+#pragma once
+
+#include <cmath>
+
+#include "core/ray.h"
+
+namespace ll {
+
+// Tests the sphere (center, radius) for t in (tmin, tmax); returns the nearest
+// such t. Hits from inside return the exit point.
+inline bool intersectSphere(const Ray& ray, const Vec3& center, float radius, float tmin, float tmax,
+                            float& t) {
+  const Vec3 f = ray.origin - center;
+  const float a = glm::dot(ray.dir, ray.dir);
+  const float bPrime = -glm::dot(f, ray.dir);  // b' = -b/2
+  const Vec3 l = f + (bPrime / a) * ray.dir;    // centre-to-line vector
+  const float discriminant = a * (radius * radius - glm::dot(l, l));
+  if (discriminant < 0.0f) return false;
+  const float c = glm::dot(f, f) - radius * radius;
+  const float q = bPrime + std::copysign(std::sqrt(discriminant), bPrime);
+  float t0 = q == 0.0f ? 0.0f : c / q;
+  float t1 = q / a;
+  if (t0 > t1) std::swap(t0, t1);
+  if (t0 > tmin && t0 < tmax) {
+    t = t0;
+    return true;
+  }
+  if (t1 > tmin && t1 < tmax) {
+    t = t1;
+    return true;
+  }
+  return false;
+}
+
+}  // namespace ll

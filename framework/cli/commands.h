@@ -1,0 +1,24 @@
+// The `lightlab` subcommands. Each adds itself to the CLI11 app and returns
+// the function that runs it after parsing. Bad input throws ll::UserError;
+// main() prints it as one line and exits non-zero.
+#pragma once
+
+#include <functional>
+
+#include <CLI/CLI.hpp>
+
+namespace ll::cli {
+
+struct GlobalOptions {
+  bool quiet = false;  // no progress bars
+  int threads = 0;     // 0 = all cores
+};
+
+using Command = std::function<void()>;
+
+Command addRenderCommand(CLI::App& app, const GlobalOptions& global);
+Command addInfoCommand(CLI::App& app, const GlobalOptions& global);
+Command addTraceCommand(CLI::App& app, const GlobalOptions& global);
+Command addCompareCommand(CLI::App& app, const GlobalOptions& global);
+
+}  // namespace ll::cli

@@ -1,0 +1,44 @@
+// The `lightlab` command line: render, info, trace, compare.
+// Any bad input ends with one line on stderr and a non-zero exit status.
+#include <cstdio>
+#include <exception>
+#include <map>
+#include <memory>
+#include <string>
+
+#include <tbb/global_control.h>
+
+#include "cli/commands.h"
+#include "core/error.h"
+
+int main(int argc, char** argv) {
+  using namespace ll::cli;
+  CLI::App app{"LightLab -- a teaching framework for realistic rendering"};
+  app.require_subcommand(1);
+  GlobalOptions global;
+  app.add_flag("-q,--quiet", global.quiet, "No progress bars");
+  app.add_option("--threads", global.threads, "Worker threads (default: all cores)")->check(CLI::Range(0, 1024));
+  const std::map<std::string, Command> commands = {
+      {"render", addRenderCommand(app, global)},
+      {"info", addInfoCommand(app, global)},
+      {"trace", addTraceCommand(app, global)},
+      {"compare", addCompareCommand(app, global)},
+  };
+  try {
+    app.parse(argc, argv);
+    std::unique_ptr<tbb::global_control> threads;
+    if (global.threads > 0)
+      threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                      static_cast<size_t>(global.threads));
+    for (CLI::App* sub : app.get_subcommands()) commands.at(sub->get_name())();
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const ll::UserError& e) {
+    std::fprintf(stderr, "lightlab: error: %s\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "lightlab: internal error: %s\n", e.what());
+    return 3;
+  }
+  return 0;
+}

@@ -1,0 +1,92 @@
+// lightlab render SCENE [-t TECHNIQUE] [-a ACCEL] [--width W --height H]
+//                [--spp N] [--seed S] [--set name=value ...] -o OUT [--stats FILE]
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/commands.h"
+#include "cli/scene_setup.h"
+#include "core/error.h"
+#include "core/progress.h"
+#include "render/render_job.h"
+
+namespace ll::cli {
+
+namespace {
+struct RenderOptions {
+  std::string scene, technique = "raycast", accelerator = "none", output, statsPath;
+  int width = 0, height = 0, spp = 1;
+  uint64_t seed = 0;
+  float exposure = 0.0f;
+  std::vector<std::string> sets;
+};
+}  // namespace
+
+Command addRenderCommand(CLI::App& app, const GlobalOptions& global) {
+  auto o = std::make_shared<RenderOptions>();
+  CLI::App* cmd = app.add_subcommand("render", "Render a scene to an image file");
+  cmd->add_option("scene", o->scene, "Scene file (.json or .obj)")->required();
+  cmd->add_option("-t,--technique", o->technique, "Rendering technique (see `lightlab info --list`)")
+      ->capture_default_str();
+  cmd->add_option("-a,--accel", o->accelerator, "Accelerator for ray queries")->capture_default_str();
+  cmd->add_option("--width", o->width, "Image width in pixels (default: the scene camera's)")
+      ->check(CLI::Range(1, 16384));
+  cmd->add_option("--height", o->height, "Image height in pixels (default: the scene camera's)")
+      ->check(CLI::Range(1, 16384));
+  cmd->add_option("--spp", o->spp, "Samples per pixel (stratified; 1 = pixel centre)")
+      ->check(CLI::Range(1, 1 << 20))
+      ->capture_default_str();
+  cmd->add_option("--seed", o->seed, "Seed of the random streams (images depend on it, not on threads)")
+      ->capture_default_str();
+  cmd->add_option("--set", o->sets, "Technique or accelerator parameter, name=value (repeatable)");
+  cmd->add_option("-o,--output", o->output, "Output image: .png, .jpg (sRGB), .hdr or .pfm (linear)")
+      ->required();
+  cmd->add_option("--exposure", o->exposure, "Exposure in stops for .png/.jpg output")->capture_default_str();
+  cmd->add_option("--stats", o->statsPath, "Write statistics (times, rays by kind, ...) as JSON");
+  return [o, &global]() {
+    SceneSetup s = setUpScene(o->scene, o->technique, o->accelerator, o->sets);
+    RenderSettings settings;
+    settings.width = o->width > 0 ? o->width : s.scene.camera.width;
+    settings.height = o->height > 0 ? o->height : s.scene.camera.height;
+    if (o->width > 0 && o->height == 0)  // keep the camera's aspect ratio
+      settings.height = std::max(1, o->width * s.scene.camera.height / s.scene.camera.width);
+    if (o->height > 0 && o->width == 0)
+      settings.width = std::max(1, o->height * s.scene.camera.width / s.scene.camera.height);
+    settings.spp = o->spp;
+    settings.seed = o->seed;
+
+    const auto technique = s.technique->make();
+    RenderJob job(s.scene, *s.accel, *technique, s.techniqueParams, settings);
+    ProgressBar bar("render " + o->technique, 1.0, global.quiet);
+    job.run([&](int done, int total) { bar.update(static_cast<double>(done) / total); });
+    bar.finish();
+
+    RenderStats& stats = job.stats();
+    stats.scene = o->scene;
+    stats.technique = s.technique->name;
+    stats.accelerator = s.accelInfo->name;
+    stats.loadSeconds = s.loadSeconds;
+    stats.buildSeconds = s.buildSeconds;
+    stats.accel.buildSeconds = s.buildSeconds;
+
+    saveImage(job.frame().resolve(), o->output, ToneMap{o->exposure});
+    if (!o->statsPath.empty()) {
+      std::ofstream out(o->statsPath);
+      if (!out) throwUserError(o->statsPath + ": cannot write statistics file");
+      out << stats.toJson().dump(2) << "\n";
+    }
+    for (const auto& [id, what] : stats.missingTasks)
+      std::fprintf(stderr, "lightlab: %s not implemented: %s -- a fallback was used; its pixels are striped magenta\n",
+                   id.c_str(), what.c_str());
+    if (stats.work.nonFinite > 0)
+      std::fprintf(stderr, "lightlab: %llu NaN/Inf samples were replaced by black\n",
+                   static_cast<unsigned long long>(stats.work.nonFinite));
+    std::printf("wrote %s (%dx%d, %d spp, %s, %.3f s render, %.2f Mrays/s)\n", o->output.c_str(), settings.width,
+                settings.height, settings.spp, s.technique->name.c_str(), stats.renderSeconds,
+                static_cast<double>(stats.work.totalRays()) / std::max(stats.renderSeconds, 1e-9) * 1e-6);
+  };
+}
+
+}  // namespace ll::cli

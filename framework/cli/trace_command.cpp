@@ -1,0 +1,108 @@
+// lightlab trace SCENE (--pixel X Y | --ray OX OY OZ DX DY DZ) [-t ..] [-a ..] [--json]
+// Prints the closest hit of one ray: t, object, primitive, barycentrics,
+// position, normals and material.
+#include <cstdio>
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/commands.h"
+#include "cli/scene_setup.h"
+#include "core/error.h"
+
+namespace ll::cli {
+
+namespace {
+
+struct TraceOptions {
+  std::string scene, technique = "raycast", accelerator = "none";
+  std::vector<float> pixel, ray;
+  std::vector<std::string> sets;
+  int width = 0, height = 0;
+  bool json = false;
+};
+
+nlohmann::json vec(const Vec3& v) { return {v.x, v.y, v.z}; }
+
+}  // namespace
+
+Command addTraceCommand(CLI::App& app, const GlobalOptions&) {
+  auto o = std::make_shared<TraceOptions>();
+  CLI::App* cmd = app.add_subcommand("trace", "Trace one ray (through a pixel or given explicitly) and print its hit");
+  cmd->add_option("scene", o->scene, "Scene file (.json or .obj)")->required();
+  auto* pixel = cmd->add_option("--pixel", o->pixel, "Pixel X Y (0,0 = top-left); the ray goes through its centre")
+                    ->expected(2);
+  auto* rayOption = cmd->add_option("--ray", o->ray, "Ray origin and direction OX OY OZ DX DY DZ (world space)")
+                  ->expected(6);
+  pixel->excludes(rayOption);
+  cmd->add_option("-t,--technique", o->technique, "Technique (recursive ones print the ray tree)")
+      ->capture_default_str();
+  cmd->add_option("-a,--accel", o->accelerator, "Accelerator")->capture_default_str();
+  cmd->add_option("--width", o->width, "Image width for --pixel (default: the scene camera's)");
+  cmd->add_option("--height", o->height, "Image height for --pixel (default: the scene camera's)");
+  cmd->add_option("--set", o->sets, "Technique or accelerator parameter, name=value (repeatable)");
+  cmd->add_flag("--json", o->json, "Print JSON");
+  return [o]() {
+    if (o->pixel.empty() && o->ray.empty()) throwUserError("trace: give --pixel X Y or --ray OX OY OZ DX DY DZ");
+    SceneSetup s = setUpScene(o->scene, o->technique, o->accelerator, o->sets);
+    Camera camera = s.scene.camera;
+    if (o->width > 0) camera.width = o->width;
+    if (o->height > 0) camera.height = o->height;
+    Ray ray;
+    nlohmann::json query;
+    if (!o->pixel.empty()) {
+      const float x = o->pixel[0], y = o->pixel[1];
+      if (x < 0 || y < 0 || x >= static_cast<float>(camera.width) || y >= static_cast<float>(camera.height))
+        throwUserError("trace: pixel (" + std::to_string(static_cast<int>(x)) + ", " +
+                       std::to_string(static_cast<int>(y)) + ") is outside the " + std::to_string(camera.width) +
+                       "x" + std::to_string(camera.height) + " image");
+      ray = referenceCameraRay(camera, CameraFrame(camera), std::floor(x) + 0.5f, std::floor(y) + 0.5f);
+      query = {{"pixel", {static_cast<int>(x), static_cast<int>(y)}}, {"width", camera.width}, {"height", camera.height}};
+    } else {
+      ray.origin = Vec3(o->ray[0], o->ray[1], o->ray[2]);
+      ray.dir = Vec3(o->ray[3], o->ray[4], o->ray[5]);
+      if (!(glm::length(ray.dir) > 0.0f)) throwUserError("trace: the ray direction must be non-zero");
+    }
+    QueryCounters counters;
+    Hit hit;
+    const bool found = s.accel->intersect(ray, hit, counters);
+    nlohmann::json out = {{"scene", o->scene},
+                          {"technique", s.technique->name},
+                          {"accelerator", s.accelInfo->name},
+                          {"query", query},
+                          {"ray", {{"origin", vec(ray.origin)}, {"direction", vec(ray.dir)}, {"kind", "camera"}}},
+                          {"nodes_visited", counters.nodesVisited},
+                          {"primitives_tested", counters.primitivesTested}};
+    if (found) {
+      const SurfacePoint sp = s.scene.surfacePoint(ray, hit);
+      const SceneObject& obj = s.scene.objects[sp.object];
+      out["hit"] = {{"t", hit.t},
+                    {"object", obj.name},
+                    {"object_id", sp.object},
+                    {"primitive", hit.prim},
+                    {"primitive_kind", s.scene.geometry.isTriangle(hit.prim) ? "triangle" : "sphere"},
+                    {"barycentrics", {1.0f - hit.b1 - hit.b2, hit.b1, hit.b2}},
+                    {"position", vec(sp.position)},
+                    {"geometric_normal", vec(sp.geometricNormal)},
+                    {"shading_normal", vec(sp.shadingNormal)},
+                    {"uv", {sp.uv.x, sp.uv.y}},
+                    {"material", sp.material->name},
+                    {"front_face", glm::dot(sp.geometricNormal, ray.dir) < 0.0f}};
+    } else {
+      out["hit"] = nullptr;
+    }
+    if (o->json) {
+      std::cout << out.dump(2) << "\n";
+    } else if (found) {
+      std::printf("hit %s (object %u, %s %u) at t = %g\n  position %s\n  normal   %s\n  material %s\n",
+                  out["hit"]["object"].get<std::string>().c_str(), out["hit"]["object_id"].get<unsigned>(),
+                  out["hit"]["primitive_kind"].get<std::string>().c_str(), hit.prim, static_cast<double>(hit.t),
+                  out["hit"]["position"].dump().c_str(), out["hit"]["geometric_normal"].dump().c_str(),
+                  out["hit"]["material"].get<std::string>().c_str());
+    } else {
+      std::printf("miss (the ray leaves the scene)\n");
+    }
+  };
+}
+
+}  // namespace ll::cli

@@ -1,0 +1,38 @@
+// A terminal progress bar with rate and time-to-go estimate, for renders,
+// solves, studies and grading. Silent when stderr is not a terminal or when
+// constructed quiet, so logs and CI output stay clean. Thread-safe update().
+#pragma once
+
+#include <atomic>
+#include <mutex>
+#include <string>
+
+#include "core/timer.h"
+
+namespace ll {
+
+class ProgressBar {
+ public:
+  // total: units of work (passes, tiles, iterations); label: what is done.
+  ProgressBar(std::string label, double total, bool quiet = false);
+  ~ProgressBar();
+
+  // Sets completed work to `done` (absolute) and redraws at most ~10 times/s.
+  void update(double done);
+  // Draws 100 % and ends the line (idempotent).
+  void finish();
+  bool active() const { return active_; }
+
+ private:
+  void draw(double done);
+
+  std::string label_;
+  double total_;
+  bool active_;
+  bool finished_ = false;
+  Timer timer_;
+  double lastDraw_ = -1.0;
+  std::mutex mutex_;
+};
+
+}  // namespace ll

@@ -1,0 +1,40 @@
+#include "render/render_job.h"
+
+#include "core/timer.h"
+
+namespace ll {
+
+RenderJob::RenderJob(const Scene& scene, const Accelerator& accel, Technique& technique, const ParamSet& params,
+                     RenderSettings settings)
+    : scene_(scene), accel_(accel), technique_(technique), params_(params), settings_(settings),
+      frame_(settings.width, settings.height) {}
+
+void RenderJob::run(const std::function<void(int, int)>& onPass) {
+  RenderContext ctx{scene_, accel_, params_, settings_, &taskLog_};
+  stats_.width = settings_.width;
+  stats_.height = settings_.height;
+  stats_.spp = settings_.spp;
+  stats_.accel = accel_.stats();
+  {
+    const ScopedTaskLog scoped(&taskLog_);
+    const Timer prepare;
+    technique_.prepare(ctx);
+    stats_.prepareSeconds = prepare.seconds();
+  }
+  const int total = technique_.passCount(ctx);
+  const Timer timer;
+  for (int pass = 0; pass < total && !cancel_; ++pass) {
+    const ScopedTaskLog scoped(&taskLog_);
+    technique_.renderPass(ctx, pass, frame_, stats_.work, cancel_);
+    if (cancel_) break;
+    frame_.completePass();
+    stats_.passes = frame_.passes();
+    stats_.renderSeconds = timer.seconds();
+    if (onPass) onPass(frame_.passes(), total);
+  }
+  stats_.renderSeconds = timer.seconds();
+  stats_.cancelled = cancel_;
+  stats_.missingTasks = taskLog_.missing();
+}
+
+}  // namespace ll

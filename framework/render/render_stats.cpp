@@ -1,0 +1,38 @@
+#include "render/render_stats.h"
+
+#include <nlohmann/json.hpp>
+
+namespace ll {
+
+nlohmann::json RenderStats::toJson() const {
+  nlohmann::json rayCounts = nlohmann::json::object();
+  for (int i = 0; i < kRayKindCount; ++i)
+    rayCounts[std::string(kRayKindNames[static_cast<size_t>(i)])] = work.rays[static_cast<size_t>(i)];
+  rayCounts["total"] = work.totalRays();
+  const double seconds = renderSeconds > 0.0 ? renderSeconds : 1e-9;
+  return {
+      {"scene", scene},
+      {"technique", technique},
+      {"accelerator", accelerator},
+      {"width", width},
+      {"height", height},
+      {"spp", spp},
+      {"passes", passes},
+      {"cancelled", cancelled},
+      {"time_seconds",
+       {{"load", loadSeconds}, {"build", buildSeconds}, {"prepare", prepareSeconds}, {"render", renderSeconds}}},
+      {"rays", rayCounts},
+      {"mrays_per_second", static_cast<double>(work.totalRays()) / seconds * 1e-6},
+      {"accelerator_stats",
+       {{"build_seconds", accel.buildSeconds},
+        {"memory_bytes", accel.memoryBytes},
+        {"nodes", accel.nodeCount},
+        {"depth", accel.depth},
+        {"nodes_visited", work.query.nodesVisited},
+        {"primitives_tested", work.query.primitivesTested}}},
+      {"non_finite_samples", work.nonFinite},
+      {"missing_tasks", missingTasks},
+  };
+}
+
+}  // namespace ll

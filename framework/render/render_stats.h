@@ -1,0 +1,46 @@
+// Statistics of one render: time by phase, rays by kind, accelerator work,
+// non-finite samples caught, and student tasks found missing.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <string>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "accel/accelerator.h"
+#include "core/ray.h"
+
+namespace ll {
+
+// Counters one worker accumulates without synchronisation.
+struct WorkCounters {
+  std::array<uint64_t, kRayKindCount> rays{};
+  QueryCounters query;
+  uint64_t nonFinite = 0;  // samples that were NaN/Inf and were replaced by 0
+  void add(const WorkCounters& o) {
+    for (int i = 0; i < kRayKindCount; ++i) rays[static_cast<size_t>(i)] += o.rays[static_cast<size_t>(i)];
+    query.add(o.query);
+    nonFinite += o.nonFinite;
+  }
+  uint64_t totalRays() const {
+    uint64_t n = 0;
+    for (uint64_t r : rays) n += r;
+    return n;
+  }
+};
+
+struct RenderStats {
+  std::string technique, accelerator, scene;
+  int width = 0, height = 0, spp = 0, passes = 0;
+  double loadSeconds = 0.0, buildSeconds = 0.0, prepareSeconds = 0.0, renderSeconds = 0.0;
+  AcceleratorStats accel;
+  WorkCounters work;
+  bool cancelled = false;
+  std::map<std::string, std::string> missingTasks;  // task id -> what
+
+  nlohmann::json toJson() const;
+};
+
+}  // namespace ll

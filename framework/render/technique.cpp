@@ -1,0 +1,59 @@
+#include "render/technique.h"
+
+#include <cmath>
+#include <mutex>
+
+#include <tbb/blocked_range2d.h>
+#include <tbb/parallel_for.h>
+
+#include "render/student_task.h"
+
+namespace ll {
+
+Vec2 stratifiedOffset(int index, int count, Rng& rng) {
+  if (count <= 1) return Vec2(0.5f);
+  const int n = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(count))));
+  const int cell = index % (n * n);
+  const Vec2 jitter = rng.uniform2();
+  return (Vec2(static_cast<float>(cell % n), static_cast<float>(cell / n)) + jitter) / static_cast<float>(n);
+}
+
+void PixelTechnique::renderPass(const RenderContext& ctx, int pass, FrameBuffer& fb, WorkCounters& counters,
+                                const std::atomic<bool>& cancel) {
+  constexpr int kTile = 16;
+  const int spp = passCount(ctx);
+  const int w = fb.width(), h = fb.height();
+  std::mutex merge;
+  tbb::parallel_for(
+      tbb::blocked_range2d<int>(0, h, kTile, 0, w, kTile),
+      [&](const tbb::blocked_range2d<int>& tile) {
+        if (cancel.load(std::memory_order_relaxed)) return;
+        const ScopedTaskLog scopedLog(ctx.taskLog);
+        WorkCounters local;
+        const Tracer tracer(ctx.scene, accelerator(ctx), local);
+        for (int y = tile.rows().begin(); y < tile.rows().end(); ++y)
+          for (int x = tile.cols().begin(); x < tile.cols().end(); ++x) {
+            const uint64_t pixel = static_cast<uint64_t>(y) * static_cast<uint64_t>(w) + static_cast<uint64_t>(x);
+            Rng rng = Rng::forPixel(ctx.settings.seed, pixel, static_cast<uint64_t>(pass));
+            PixelSample s;
+            s.x = x;
+            s.y = y;
+            s.pass = pass;
+            s.rng = &rng;
+            s.position = Vec2(static_cast<float>(x), static_cast<float>(y)) + stratifiedOffset(pass, spp, rng);
+            takeStubFlag();
+            Rgb value = renderSample(ctx, s, tracer);
+            if (!isFinite(value)) {
+              ++local.nonFinite;
+              value = Rgb(0.0f);
+            }
+            fb.add(x, y, value);
+            if (takeStubFlag()) fb.markStub(x, y);
+          }
+        std::lock_guard lock(merge);
+        counters.add(local);
+      },
+      tbb::simple_partitioner());
+}
+
+}  // namespace ll

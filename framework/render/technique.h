@@ -1,0 +1,88 @@
+// The Technique interface: a rendering method. It declares its parameters and
+// the effects it simulates in a TechniqueInfo, renders progressively pass by
+// pass into a FrameBuffer, and counts its work.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "accel/accelerator.h"
+#include "core/params.h"
+#include "core/rng.h"
+#include "render/frame_buffer.h"
+#include "render/render_stats.h"
+#include "render/student_task.h"
+#include "render/tracer.h"
+#include "scene/scene.h"
+
+namespace ll {
+
+struct RenderSettings {
+  int width = 512;     // pixels
+  int height = 512;
+  int spp = 1;         // samples per pixel = passes for pixel techniques
+  uint64_t seed = 0;   // random streams derive from (seed, pixel, sample)
+};
+
+struct RenderContext {
+  const Scene& scene;
+  const Accelerator& accel;
+  const ParamSet& params;
+  RenderSettings settings;
+  TaskLog* taskLog = nullptr;  // where student stubs report; installed on every worker
+};
+
+class Technique {
+ public:
+  virtual ~Technique() = default;
+  // Once per (scene, parameters) before the passes: precomputation goes here.
+  virtual void prepare(const RenderContext& ctx) { (void)ctx; }
+  // How many passes make the full image.
+  virtual int passCount(const RenderContext& ctx) const { return ctx.settings.spp; }
+  // Renders pass `pass` (0-based) into fb, adding work to `counters`. Must
+  // return early (leaving the pass incomplete) when `cancel` becomes true.
+  virtual void renderPass(const RenderContext& ctx, int pass, FrameBuffer& fb, WorkCounters& counters,
+                          const std::atomic<bool>& cancel) = 0;
+};
+
+// One pixel sample as a PixelTechnique sees it.
+struct PixelSample {
+  int x = 0, y = 0;  // pixel, (0,0) top-left
+  int pass = 0;      // sample index within the pixel
+  Vec2 position;     // continuous image position of the sample (pixel centre = x + 0.5)
+  Rng* rng = nullptr;
+};
+
+// Base for techniques that compute each pixel sample independently: renders
+// each pass over 16x16 tiles in parallel (oneTBB), with stratified sample
+// positions, the (seed, pixel, sample) random stream, NaN/Inf guarding and
+// stub marking done here once for all of them.
+class PixelTechnique : public Technique {
+ public:
+  void renderPass(const RenderContext& ctx, int pass, FrameBuffer& fb, WorkCounters& counters,
+                  const std::atomic<bool>& cancel) final;
+
+ protected:
+  // Radiance along the sample's camera path. `tracer` counts rays.
+  virtual Rgb renderSample(const RenderContext& ctx, const PixelSample& sample, const Tracer& tracer) const = 0;
+  // The accelerator this technique traces with (default: the context's).
+  virtual const Accelerator& accelerator(const RenderContext& ctx) const { return ctx.accel; }
+};
+
+// Sample position inside the unit pixel for sample `index` of `count`:
+// the pixel centre for count 1, else jittered strata of a ceil(sqrt(count))^2 grid.
+Vec2 stratifiedOffset(int index, int count, Rng& rng);
+
+struct TechniqueInfo {
+  std::string name;
+  std::string help;
+  EffectSet simulates;  // effects this technique can reproduce
+  int cost = 0;         // rough cost rank, for "cheapest technique that simulates all"
+  std::vector<ParamDecl> params;
+  std::unique_ptr<Technique> (*make)() = nullptr;
+};
+
+}  // namespace ll

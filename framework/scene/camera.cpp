@@ -1,0 +1,21 @@
+#include "scene/camera.h"
+
+namespace ll {
+
+CameraFrame::CameraFrame(const Camera& c) {
+  w = glm::normalize(c.target - c.eye);
+  u = glm::normalize(glm::cross(w, c.up));
+  v = glm::cross(u, w);
+  tanHalfFovY = std::tan(radians(c.fovYDeg) * 0.5f);
+}
+
+Ray referenceCameraRay(const Camera& camera, const CameraFrame& f, float px, float py) {
+  const float sx = (2.0f * px / static_cast<float>(camera.width) - 1.0f) * f.tanHalfFovY * camera.aspect();
+  const float sy = (1.0f - 2.0f * py / static_cast<float>(camera.height)) * f.tanHalfFovY;
+  Ray ray;
+  ray.origin = camera.eye;
+  ray.dir = glm::normalize(f.w + sx * f.u + sy * f.v);
+  return ray;
+}
+
+}  // namespace ll
