@@ -65,12 +65,12 @@ class LocatingSax {
   bool binary(Json::binary_t& v) { return value() && dom_.binary(v); }
   bool start_object(std::size_t n) {
     value();
-    frames_.push_back({false, 0, {}});
+    frames_.push_back({false, -1, {}});
     return dom_.start_object(n);
   }
   bool key(std::string& k) {
     frames_.back().key = k;
-    record(pointer());
+    record(pointer(), k.size() + 1);  // point at the key's opening quote
     return dom_.key(k);
   }
   bool end_object() {
@@ -79,7 +79,7 @@ class LocatingSax {
   }
   bool start_array(std::size_t n) {
     value();
-    frames_.push_back({true, 0, {}});
+    frames_.push_back({true, -1, {}});
     return dom_.start_array(n);
   }
   bool end_array() {
@@ -99,7 +99,7 @@ class LocatingSax {
  private:
   struct Frame {
     bool isArray;
-    size_t index;
+    long index;  // of the current element; -1 before the first
     std::string key;
   };
   std::string pointer() const {
@@ -107,14 +107,16 @@ class LocatingSax {
     for (const Frame& f : frames_) p += "/" + (f.isArray ? std::to_string(f.index) : escapePointerToken(f.key));
     return p;
   }
-  void record(const std::string& ptr) {
-    offsets_.emplace(ptr, static_cast<size_t>(std::max<std::ptrdiff_t>(0, *cursor_ - begin_ - 1)));
+  // Records the offset of the token just read, moved back by `back` characters.
+  void record(const std::string& ptr, size_t back = 0) {
+    const std::ptrdiff_t at = *cursor_ - begin_ - 1 - static_cast<std::ptrdiff_t>(back);
+    offsets_.emplace(ptr, static_cast<size_t>(std::max<std::ptrdiff_t>(0, at)));
   }
-  // Called for every value: records it and advances the enclosing array index.
+  // Called at the start of every value: moves to the next array element and records it.
   bool value() {
     if (!frames_.empty() && frames_.back().isArray) {
-      record(pointer());
       ++frames_.back().index;
+      record(pointer());
     } else if (frames_.empty()) {
       record("");
     }
@@ -151,11 +153,19 @@ JsonDocument::JsonDocument(std::string text, std::string file) : file_(std::move
   TrackingIterator first{begin, &cursor}, last{begin + text_.size(), &cursor};
   const bool ok = nlohmann::json::sax_parse(first, last, &sax);
   if (!ok) {
-    // nlohmann reports the offset one past the offending character.
-    auto [line, col] = lineColumn(text_, sax.errorOffset > 0 ? sax.errorOffset - 1 : 0);
+    // nlohmann reports the offset just past the offending token: point at its start.
+    const size_t tokenStart = sax.errorOffset > sax.errorToken.size() ? sax.errorOffset - sax.errorToken.size() : 0;
+    auto [line, col] = lineColumn(text_, tokenStart);
     std::string detail = sax.errorMessage;
     const size_t colon = detail.find(": ", detail.find("column"));
     if (colon != std::string::npos) detail = detail.substr(colon + 2);
+    const bool closerExpected = detail.find("expected '}'") != std::string::npos ||
+                                detail.find("expected ']'") != std::string::npos;
+    const bool valueFound = detail.find("unexpected string") != std::string::npos ||
+                            detail.find("unexpected number") != std::string::npos ||
+                            detail.find("unexpected '{'") != std::string::npos ||
+                            detail.find("unexpected '['") != std::string::npos;
+    if (closerExpected && valueFound) detail += " (a missing comma before it?)";
     throwUserError(file_, line, col, "malformed JSON: " + detail);
   }
 }

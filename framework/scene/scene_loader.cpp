@@ -18,8 +18,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr float kBig = 1e30f;
-
 // An object transform: points by `m`, normals by the inverse transpose.
 struct Transform {
   Mat4 m{1.0f};
@@ -244,8 +242,9 @@ void parseObject(const JsonNode& n, Scene& scene, GeometryBuilder& builder,
   if (type == "sphere") {
     n.allowOnly({"type", "name", "material", "transform", "center", "radius"});
     const Vec3 c = n.vec3("center");
-    const float r = n.number("radius", 0.0f, kBig);
-    if (!(r > 0.0f)) n.child("radius").fail(n.what() + ".radius must be > 0, got " + n.child("radius").json().dump());
+    const JsonNode radius = n.child("radius");
+    const float r = radius.asNumber();
+    if (!(r > 0.0f)) radius.fail(radius.what() + " must be > 0, got " + radius.json().dump());
     float s = 1.0f;
     if (!xf.uniformScale(s)) n.child("transform").fail("spheres take only uniform scale");
     builder.addSphere(object, Sphere{xf.point(c), r * s});

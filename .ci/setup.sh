@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# LightLab set-up: installs what is missing (Debian packages, as root), builds,
+# and then either runs the main job or the whole test suite.
+#
+#   bash .ci/setup.sh run    # the GUI on the Cornell box when a display exists,
+#                            # else a headless render whose path is printed
+#   bash .ci/setup.sh test   # the whole test suite (ctest, in parallel)
+#   bash .ci/setup.sh build  # install + build only
+set -euo pipefail
+mode=${1:-run}
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=${LIGHTLAB_BUILD_DIR:-$root/build}
+jobs=$(nproc 2>/dev/null || echo 2)
+
+packages=(
+  build-essential cmake ninja-build ccache pkg-config git python3 python3-jsonschema
+  libglfw3-dev libimgui-dev libglm-dev libstb-dev libopenmesh-dev libtinyobjloader-dev
+  nlohmann-json3-dev libcli11-dev libtbb-dev libgtest-dev libbenchmark-dev libembree-dev
+  unifdef xvfb xauth
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${missing[*]}"
+  sudo_cmd=()
+  [ "$(id -u)" -ne 0 ] && sudo_cmd=(sudo)
+  export DEBIAN_FRONTEND=noninteractive
+  "${sudo_cmd[@]}" apt-get update -qq
+  "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+werror=OFF
+[ "${CI:-}" = "true" ] && werror=ON
+cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER_LAUNCHER=ccache \
+  -DLIGHTLAB_WARNINGS_AS_ERRORS=$werror >/dev/null
+cmake --build "$build" -j "$jobs"
+
+case "$mode" in
+  build) ;;
+  test)
+    cd "$build"
+    ctest --output-on-failure -j "$jobs" --timeout 1500
+    ;;
+  run)
+    scene="$root/data/scenes/cornell_box.json"
+    if [ -n "${DISPLAY:-}" ] && "$build/lightlab" --help 2>/dev/null | grep -q '^\s*gui'; then
+      exec "$build/lightlab" gui "$scene"
+    fi
+    out="$root/out/cornell_box.png"
+    mkdir -p "$(dirname "$out")"
+    "$build/lightlab" render "$scene" -t raycast -o "$out" --spp 4
+    echo "Cornell box rendered to $out"
+    ;;
+  *) echo "usage: bash .ci/setup.sh [run|test|build]" >&2; exit 2 ;;
+esac

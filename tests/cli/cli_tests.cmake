@@ -1,0 +1,68 @@
+# End-to-end tests of the `lightlab` command line: exit status, the one-line
+# error contract, and real output files.
+set(LL $<TARGET_FILE:lightlab>)
+set(SCENES ${PROJECT_SOURCE_DIR}/data/scenes)
+set(OUT ${CMAKE_CURRENT_BINARY_DIR}/cli_out)
+file(MAKE_DIRECTORY ${OUT})
+set(EXPECT_ERROR ${CMAKE_CURRENT_LIST_DIR}/expect_error.sh)
+
+# A bad-input case: NAME, regex the single stderr line must match, then the arguments.
+function(lightlab_error_test name regex)
+  add_test(NAME cli.error.${name}
+           COMMAND bash ${EXPECT_ERROR} "${regex}" ${OUT}/${name}.png -- ${LL} ${ARGN})
+endfunction()
+
+lightlab_error_test(missing_scene "nope\\.json: no such scene file" render ${SCENES}/nope.json -o ${OUT}/missing_scene.png)
+lightlab_error_test(malformed_json "malformed_json\\.json:6:5: malformed JSON: .*missing comma"
+                    render ${SCENES}/tests/bad/malformed_json.json -o ${OUT}/malformed_json.png)
+lightlab_error_test(unknown_key "unknown_key\\.json:6:5: unknown key 'fovy' in scene\\.camera \\(allowed: eye, target"
+                    render ${SCENES}/tests/bad/unknown_key.json -o ${OUT}/unknown_key.png)
+lightlab_error_test(wrong_type "wrong_type\\.json:[0-9]+:[0-9]+: .*radius must be a number, got a string"
+                    render ${SCENES}/tests/bad/wrong_type.json -o ${OUT}/wrong_type.png)
+lightlab_error_test(negative_radius "negative_radius\\.json:[0-9]+:[0-9]+: .*radius must be > 0"
+                    render ${SCENES}/tests/bad/negative_radius.json -o ${OUT}/negative_radius.png)
+lightlab_error_test(unknown_material "unknown_material\\.json:[0-9]+:[0-9]+: unknown material 'gold' \\(defined: "
+                    render ${SCENES}/tests/bad/unknown_material.json -o ${OUT}/unknown_material.png)
+lightlab_error_test(missing_mesh "missing_mesh\\.json:[0-9]+:[0-9]+: mesh file not found: /.*does_not_exist\\.ply"
+                    render ${SCENES}/tests/bad/missing_mesh.json -o ${OUT}/missing_mesh.png)
+lightlab_error_test(unknown_technique "unknown technique 'phong' \\(known: raycast"
+                    render ${SCENES}/cornell_box.json -t phong -o ${OUT}/unknown_technique.png)
+lightlab_error_test(unknown_accelerator "unknown accelerator 'kd' \\(known: none"
+                    render ${SCENES}/cornell_box.json -a kd -o ${OUT}/unknown_accelerator.png)
+lightlab_error_test(out_of_range "parameter 'light_samples' = 0 is out of range \\[1, 1024\\]"
+                    render ${SCENES}/cornell_box.json --set light_samples=0 -o ${OUT}/out_of_range.png)
+lightlab_error_test(unknown_parameter "has no parameter 'samples' \\(parameters: light_samples"
+                    render ${SCENES}/cornell_box.json --set samples=4 -o ${OUT}/unknown_parameter.png)
+lightlab_error_test(bad_choice "unknown value 'gpu' \\(one of: student, framework\\)"
+                    render ${SCENES}/cornell_box.json --set intersection=gpu -o ${OUT}/bad_choice.png)
+lightlab_error_test(bad_extension "unknown image extension '\\.bmp' \\(allowed: \\.png, \\.jpg, \\.hdr, \\.pfm\\)"
+                    render ${SCENES}/tests/sphere_point_light.json -o ${OUT}/bad_extension.bmp)
+lightlab_error_test(spp_range "--spp: Value 0 not in range"
+                    render ${SCENES}/cornell_box.json --spp 0 -o ${OUT}/spp_range.png)
+
+# Renders that must succeed and write their files.
+add_test(NAME cli.render.cornell_box
+         COMMAND ${LL} --quiet render ${SCENES}/cornell_box.json -t raycast -o ${OUT}/cornell.png
+                 --stats ${OUT}/cornell.json)
+set_tests_properties(cli.render.cornell_box PROPERTIES PASS_REGULAR_EXPRESSION "wrote .*cornell\\.png \\(512x512")
+add_test(NAME cli.render.cornell_box_stats
+         COMMAND ${Python3_EXECUTABLE} -c "import json,sys; s=json.load(open(sys.argv[1])); r=s['rays']; \
+assert r['camera']==512*512, r; assert r['shadow']>0 and r['reflection']==0 and r['refraction']==0, r; \
+assert s['non_finite_samples']==0 and s['missing_tasks']=={}, s; print('ok', r)" ${OUT}/cornell.json)
+set_tests_properties(cli.render.cornell_box_stats PROPERTIES DEPENDS cli.render.cornell_box)
+add_test(NAME cli.compare.identical
+         COMMAND ${LL} compare ${OUT}/cornell.png ${OUT}/cornell.png --metric rmse --max 0 --diff ${OUT}/diff.png)
+set_tests_properties(cli.compare.identical PROPERTIES DEPENDS cli.render.cornell_box PASS_REGULAR_EXPRESSION "rmse 0")
+add_test(NAME cli.render.obj_scene
+         COMMAND ${LL} --quiet render ${SCENES}/tests/obj_scene/cube.obj --width 64 -o ${OUT}/cube.pfm)
+add_test(NAME cli.info.cornell_json
+         COMMAND ${LL} info ${SCENES}/cornell_box.json --json)
+set_tests_properties(cli.info.cornell_json PROPERTIES PASS_REGULAR_EXPRESSION "\"soft-shadows\"")
+add_test(NAME cli.trace.pixel_json
+         COMMAND ${LL} trace ${SCENES}/cornell_box.json --pixel 256 480 --json)
+set_tests_properties(cli.trace.pixel_json PROPERTIES PASS_REGULAR_EXPRESSION "\"object\": \"floor\"")
+add_test(NAME cli.help COMMAND ${LL} --help)
+set_tests_properties(cli.help PROPERTIES PASS_REGULAR_EXPRESSION "render.*info.*trace.*compare")
+lightlab_error_test(compare_sizes "image sizes differ" compare ${OUT}/cube.pfm ${OUT}/cornell.png)
+set_tests_properties(cli.error.compare_sizes PROPERTIES DEPENDS "cli.render.obj_scene;cli.render.cornell_box")
+lightlab_error_test(compare_missing "nothere\\.png: no such image file" compare ${OUT}/nothere.png ${OUT}/cornell.png)
