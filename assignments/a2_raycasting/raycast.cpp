@@ -23,9 +23,7 @@ namespace {
 class Raycast final : public PixelTechnique {
  public:
   void prepare(const RenderContext& ctx) override {
-    camera_ = ctx.scene.camera;
-    camera_.width = ctx.settings.width;
-    camera_.height = ctx.settings.height;
+    camera_ = renderCamera(ctx.scene, ctx.settings);
     lightSamples_ = ctx.params.getInt("light_samples");
     hardShadows_ = ctx.scene.effects.has(Effect::HardShadows);
     softShadows_ = ctx.scene.effects.has(Effect::SoftShadows);

@@ -30,7 +30,8 @@ struct WatertightRay {
 
 // Tests the triangle (p0, p1, p2) for t in (tmin, tmax). On a hit returns true
 // and sets t and the barycentrics b1, b2 of p1 and p2 (b0 = 1 - b1 - b2).
-// Both faces hit; degenerate (zero-area) triangles never hit.
+// Both faces hit. Exactly collinear vertices may still report hits through
+// rounding: the scene loaders drop zero-area triangles before they get here.
 inline bool intersectTriangle(const WatertightRay& r, const Vec3& p0, const Vec3& p1, const Vec3& p2,
                               float tmin, float tmax, float& t, float& b1, float& b2) {
   const Vec3 a = p0 - r.origin, b = p1 - r.origin, c = p2 - r.origin;

@@ -31,8 +31,12 @@ int main(int argc, char** argv) {
       threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
                                                       static_cast<size_t>(global.threads));
     for (CLI::App* sub : app.get_subcommands()) commands.at(sub->get_name())();
+  } catch (const CLI::RuntimeError& e) {
+    return e.get_exit_code();  // a command's own verdict (e.g. compare --max), already explained
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help
+    std::fprintf(stderr, "lightlab: error: %s (see lightlab --help)\n", e.what());
+    return 2;
   } catch (const ll::UserError& e) {
     std::fprintf(stderr, "lightlab: error: %s\n", e.what());
     return 2;

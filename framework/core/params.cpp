@@ -84,7 +84,8 @@ void ParamSet::set(const std::string& name, const std::string& value) {
     case ParamDecl::Type::Float:
       if (!parseNumber(value, v)) throwUserError(where + ": '" + value + "' is not a number (range " + d.rangeText() + ")");
       if (v < d.min || v > d.max) throwUserError(where + " = " + value + " is out of range " + d.rangeText());
-      break;
+      values_[name] = d.type == ParamDecl::Type::Int ? std::to_string(static_cast<long long>(v)) : numberText(v);
+      return;
     case ParamDecl::Type::Bool:
       if (value != "true" && value != "false" && value != "1" && value != "0")
         throwUserError(where + ": '" + value + "' is not a boolean (allowed: true, false)");

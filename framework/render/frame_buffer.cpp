@@ -6,10 +6,12 @@ namespace ll {
 
 FrameBuffer::FrameBuffer(int width, int height)
     : width_(width), height_(height), sum_(static_cast<size_t>(width) * height, Rgb(0.0f)),
+      count_(static_cast<size_t>(width) * height, 0u),
       stub_(static_cast<size_t>(width) * height, 0) {}
 
 void FrameBuffer::clear() {
   std::fill(sum_.begin(), sum_.end(), Rgb(0.0f));
+  std::fill(count_.begin(), count_.end(), 0u);
   std::fill(stub_.begin(), stub_.end(), 0);
   passes_ = 0;
 }
@@ -18,11 +20,10 @@ bool FrameBuffer::anyStub() const { return std::any_of(stub_.begin(), stub_.end(
 
 Image FrameBuffer::resolve(bool markStubs) const {
   Image image(width_, height_);
-  const float scale = passes_ > 0 ? 1.0f / static_cast<float>(passes_) : 0.0f;
   for (int y = 0; y < height_; ++y)
     for (int x = 0; x < width_; ++x) {
       const size_t i = index(x, y);
-      image.at(x, y) = sum_[i] * scale;
+      image.at(x, y) = count_[i] > 0 ? sum_[i] / static_cast<float>(count_[i]) : Rgb(0.0f);
       // Diagonal stripes, 2 of every 8 pixels, so the picture stays readable.
       if (markStubs && stub_[i] && ((x + y) % 8) < 2) image.at(x, y) = Rgb(1.0f, 0.0f, 1.0f);
     }

@@ -6,6 +6,7 @@
 #include <atomic>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,7 +26,16 @@ struct RenderSettings {
   int height = 512;
   int spp = 1;         // samples per pixel = passes for pixel techniques
   uint64_t seed = 0;   // random streams derive from (seed, pixel, sample)
+  std::optional<Camera> camera;  // overrides the scene's camera (the GUI's view); width/height above win
 };
+
+// The camera a render uses: settings.camera or the scene's, at the settings' resolution.
+inline Camera renderCamera(const Scene& scene, const RenderSettings& settings) {
+  Camera c = settings.camera.value_or(scene.camera);
+  c.width = settings.width;
+  c.height = settings.height;
+  return c;
+}
 
 struct RenderContext {
   const Scene& scene;

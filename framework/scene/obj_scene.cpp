@@ -102,6 +102,9 @@ Scene loadObjScene(const std::string& path) {
                                         attrib.texcoords[2 * static_cast<size_t>(ti) + 1]));
         }
       }
+      if (glm::length(glm::cross(g.positions[tri.y] - g.positions[tri.x], g.positions[tri.z] - g.positions[tri.x])) ==
+          0.0f)
+        continue;  // zero-area: can be neither hit nor shaded
       g.triangles.push_back(tri);
       g.triangleObject.push_back(it->second);
     }

@@ -161,6 +161,9 @@ class GeometryBuilder {
       pendingUvs_.push_back(mesh.uvs.empty() ? Vec2(0.0f) : mesh.uvs[i]);
     anyUvs_ |= !mesh.uvs.empty();
     for (const glm::uvec3& t : mesh.triangles) {
+      // Zero-area triangles (repeated or collinear vertices) can neither be hit nor shaded: drop them.
+      const Vec3 &a = g.positions[base + t.x], &b = g.positions[base + t.y], &c = g.positions[base + t.z];
+      if (glm::length(glm::cross(b - a, c - a)) == 0.0f) continue;
       g.triangles.push_back(t + glm::uvec3(base));
       g.triangleObject.push_back(object);
     }
