@@ -14,6 +14,8 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+
+#include "test_support.h"
 #include <nlohmann/json.hpp>
 #include <tbb/global_control.h>
 
@@ -30,18 +32,8 @@ namespace {
 
 const std::string kScenes = std::string(LIGHTLAB_DATA_DIR) + "/scenes/";
 
-template <class F>
-std::string errorOf(F&& f) {
-  try {
-    f();
-  } catch (const UserError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "expected a UserError";
-  return "";
-}
-
-bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+using testing_support::contains;
+using testing_support::errorOf;
 
 // A PixelTechnique for testing the machinery: every sample is a function of
 // (x, y, pass) given at construction, with optional hooks.

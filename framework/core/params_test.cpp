@@ -3,6 +3,8 @@
 #include <string>
 
 #include <gtest/gtest.h>
+
+#include "test_support.h"
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
@@ -20,19 +22,8 @@ ParamSet makeParams() {
                   });
 }
 
-// The message of the UserError `f` throws ("" and a test failure if none).
-template <class F>
-std::string errorOf(F&& f) {
-  try {
-    f();
-  } catch (const UserError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "expected a UserError";
-  return "";
-}
-
-bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+using testing_support::contains;
+using testing_support::errorOf;
 
 TEST(Params, DeclarationsDescribeThemselves) {
   const ParamSet p = makeParams();

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "test_support.h"
+
 #include "core/error.h"
 
 namespace ll {
@@ -28,18 +30,8 @@ std::pair<int, int> positionOf(const std::string& text, const std::string& needl
   return {line, col};
 }
 
-template <class F>
-std::string errorOf(F&& f) {
-  try {
-    f();
-  } catch (const UserError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "expected a UserError";
-  return "";
-}
-
-bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+using testing_support::contains;
+using testing_support::errorOf;
 
 const std::string kScene = R"({
   "camera": {"eye": [0, 0, 4], "fov_y_deg": 40},

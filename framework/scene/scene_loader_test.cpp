@@ -13,6 +13,8 @@
 
 #include <gtest/gtest.h>
 
+#include "test_support.h"
+
 #include "core/error.h"
 
 namespace ll {
@@ -22,18 +24,8 @@ namespace fs = std::filesystem;
 
 const std::string kScenes = std::string(LIGHTLAB_DATA_DIR) + "/scenes";
 
-template <class F>
-std::string errorOf(F&& f) {
-  try {
-    f();
-  } catch (const UserError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "expected a UserError";
-  return "";
-}
-
-bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+using testing_support::contains;
+using testing_support::errorOf;
 bool startsWith(const std::string& s, const std::string& prefix) { return s.rfind(prefix, 0) == 0; }
 
 // A folder of this process's own (test binaries may run concurrently, e.g.

@@ -1,0 +1,26 @@
+// Helpers shared by the GoogleTest files (tests/ is on their include path).
+#pragma once
+
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "core/error.h"
+
+namespace ll::testing_support {
+
+// The message of the UserError `f` throws ("" and a test failure if none).
+template <class F>
+std::string errorOf(F&& f) {
+  try {
+    f();
+  } catch (const UserError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "expected a UserError";
+  return "";
+}
+
+inline bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+
+}  // namespace ll::testing_support
