@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "core/error.h"
+#include "core/ray.h"
 
 namespace ll::testing_support {
 
@@ -22,5 +23,15 @@ std::string errorOf(F&& f) {
 }
 
 inline bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+
+// A ray with every field given (Ray has no constructor).
+inline Ray makeRay(Vec3 origin, Vec3 dir, float tmin = 0.0f, float tmax = kInfinity) {
+  Ray r;
+  r.origin = origin;
+  r.dir = dir;
+  r.tmin = tmin;
+  r.tmax = tmax;
+  return r;
+}
 
 }  // namespace ll::testing_support

@@ -15,6 +15,8 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+
+#include "test_support.h"
 #include <tbb/global_control.h>
 #include <tbb/task_arena.h>
 
@@ -53,14 +55,7 @@ std::string missingTasks(const RenderStats& stats) {
   return out;
 }
 
-Ray makeRay(Vec3 origin, Vec3 dir, float tmin = 0.0f, float tmax = kInfinity) {
-  Ray r;
-  r.origin = origin;
-  r.dir = dir;
-  r.tmin = tmin;
-  r.tmax = tmax;
-  return r;
-}
+using testing_support::makeRay;
 
 void expectVecNear(const Vec3& a, const Vec3& b, float tol, const std::string& what = "") {
   EXPECT_NEAR(a.x, b.x, tol) << what;

@@ -10,6 +10,8 @@
 
 #include <gtest/gtest.h>
 
+#include "test_support.h"
+
 #include "accel/accelerator.h"
 #include "accel/ray_sphere.h"
 #include "accel/ray_triangle.h"
@@ -22,14 +24,7 @@ namespace {
 
 using DVec3 = glm::dvec3;
 
-Ray makeRay(Vec3 origin, Vec3 dir, float tmin = 0.0f, float tmax = kInfinity) {
-  Ray r;
-  r.origin = origin;
-  r.dir = dir;
-  r.tmin = tmin;
-  r.tmax = tmax;
-  return r;
-}
+using testing_support::makeRay;
 
 struct TriHit {
   bool hit = false;

@@ -59,6 +59,12 @@ std::string readBytes(const std::string& path) {
   return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }
 
+// Writes `img` to `path` and reads it back.
+Image saveAndLoad(const Image& img, const std::string& path) {
+  saveImage(img, path);
+  return loadImage(path);
+}
+
 TEST(Image, ConstructionFillAndMean) {
   Image img(3, 2, Rgb(0.5f, 1.0f, 2.0f));
   EXPECT_EQ(img.width(), 3);
@@ -126,8 +132,7 @@ TEST(Image, PfmRoundTripIsBitExact) {
   img.at(6, 4) = Rgb(std::numeric_limits<float>::denorm_min(), 65504.0f, 0.1f);
   img.at(3, 2) = Rgb(std::numeric_limits<float>::max(), -0.0f, 1.0f / 3.0f);
   const std::string path = tempPath("exact.pfm");
-  saveImage(img, path);
-  const Image back = loadImage(path);
+  const Image back = saveAndLoad(img, path);
   ASSERT_EQ(back.width(), 7);
   ASSERT_EQ(back.height(), 5);
   for (int y = 0; y < 5; ++y)
@@ -207,8 +212,7 @@ TEST(Image, HdrRoundTripWithinRgbePrecision) {
   Image img = gradientImage(9, 4, 40.0f);
   img.at(1, 1) = Rgb(1000.0f, 0.001f, 3.0f);
   const std::string path = tempPath("round.hdr");
-  saveImage(img, path);
-  const Image back = loadImage(path);
+  const Image back = saveAndLoad(img, path);
   ASSERT_EQ(back.width(), 9);
   ASSERT_EQ(back.height(), 4);
   for (int y = 0; y < 4; ++y)
@@ -224,8 +228,7 @@ TEST(Image, HdrRoundTripWithinRgbePrecision) {
 TEST(Image, PngRoundTripWithinQuantisation) {
   const Image img = gradientImage(11, 6, 1.0f);
   const std::string path = tempPath("round.png");
-  saveImage(img, path);
-  const Image back = loadImage(path);
+  const Image back = saveAndLoad(img, path);
   ASSERT_EQ(back.width(), 11);
   ASSERT_EQ(back.height(), 6);
   for (int y = 0; y < 6; ++y)
