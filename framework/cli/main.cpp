@@ -1,4 +1,4 @@
-// The `lightlab` command line: render, info, trace, compare.
+// The `lightlab` command line: render, info, trace, compare, and gui when built with it.
 // Any bad input ends with one line on stderr and a non-zero exit status.
 #include <cstdio>
 #include <exception>
@@ -18,12 +18,15 @@ int main(int argc, char** argv) {
   GlobalOptions global;
   app.add_flag("-q,--quiet", global.quiet, "No progress bars");
   app.add_option("--threads", global.threads, "Worker threads (default: all cores)")->check(CLI::Range(0, 1024));
-  const std::map<std::string, Command> commands = {
+  std::map<std::string, Command> commands = {
       {"render", addRenderCommand(app, global)},
       {"info", addInfoCommand(app, global)},
       {"trace", addTraceCommand(app, global)},
       {"compare", addCompareCommand(app, global)},
   };
+#ifdef LIGHTLAB_HAVE_GUI
+  commands["gui"] = addGuiCommand(app, global);
+#endif
   try {
     app.parse(argc, argv);
     std::unique_ptr<tbb::global_control> threads;

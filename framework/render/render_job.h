@@ -26,6 +26,8 @@ class RenderJob {
   const FrameBuffer& frame() const { return frame_; }
   const RenderStats& stats() const { return stats_; }  // complete once run() returned
   RenderStats& stats() { return stats_; }
+  // Student tasks found missing so far (thread-safe; complete once run() returned).
+  const TaskLog& taskLog() const { return taskLog_; }
 
  private:
   const Scene& scene_;

@@ -104,23 +104,6 @@ Material parseMaterial(const JsonNode& n, const std::string& name, const std::st
   return m;
 }
 
-Camera parseCamera(const JsonNode& n) {
-  n.allowOnly({"eye", "target", "up", "fov_y_deg", "width", "height"});
-  Camera c;
-  c.eye = n.vec3("eye");
-  c.target = n.vec3("target");
-  c.up = n.vec3("up", Vec3(0, 1, 0));
-  c.fovYDeg = n.number("fov_y_deg", 0.01f, 179.0f);
-  c.width = n.integer("width", 512, 1, 16384);
-  c.height = n.integer("height", 512, 1, 16384);
-  const Vec3 view = c.target - c.eye;
-  if (glm::length(view) <= 0.0f) n.child("target").fail("camera target equals the eye; they must differ");
-  if (glm::length(c.up) <= 0.0f) n.child("up").fail("camera up must be non-zero");
-  if (glm::length(glm::cross(glm::normalize(view), glm::normalize(c.up))) < 1e-6f)
-    n.fail("camera up is parallel to the view direction (target - eye); choose another up");
-  return c;
-}
-
 Light parseLight(const JsonNode& n) {
   n.requireObject();
   const std::string type = n.string("type");
@@ -308,6 +291,23 @@ void parseObject(const JsonNode& n, Scene& scene, GeometryBuilder& builder,
 }
 
 }  // namespace
+
+Camera parseCamera(const JsonNode& n) {
+  n.allowOnly({"eye", "target", "up", "fov_y_deg", "width", "height"});
+  Camera c;
+  c.eye = n.vec3("eye");
+  c.target = n.vec3("target");
+  c.up = n.vec3("up", Vec3(0, 1, 0));
+  c.fovYDeg = n.number("fov_y_deg", 0.01f, 179.0f);
+  c.width = n.integer("width", 512, 1, 16384);
+  c.height = n.integer("height", 512, 1, 16384);
+  const Vec3 view = c.target - c.eye;
+  if (glm::length(view) <= 0.0f) n.child("target").fail("camera target equals the eye; they must differ");
+  if (glm::length(c.up) <= 0.0f) n.child("up").fail("camera up must be non-zero");
+  if (glm::length(glm::cross(glm::normalize(view), glm::normalize(c.up))) < 1e-6f)
+    n.fail("camera up is parallel to the view direction (target - eye); choose another up");
+  return c;
+}
 
 Scene parseJsonScene(const std::string& text, const std::string& file, const std::string& baseDir) {
   const JsonDocument doc(text, file);

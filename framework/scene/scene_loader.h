@@ -5,9 +5,14 @@
 
 #include <string>
 
+#include "scene/json_document.h"
 #include "scene/scene.h"
 
 namespace ll {
+
+// A camera object as scene files write it (eye, target, up, fov_y_deg,
+// width, height); presets use the same format. Fails at the node's position.
+Camera parseCamera(const JsonNode& node);
 
 // Loads by extension: .json (LightLab scene) or .obj (OBJ + MTL as a scene).
 Scene loadScene(const std::string& path);

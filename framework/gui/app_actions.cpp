@@ -1,0 +1,351 @@
+#include "gui/app_actions.h"
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+#include <system_error>
+
+#include "core/error.h"
+#include "gui/view_camera.h"
+#include "modules/registry.h"
+#include "scene/scene_loader.h"
+
+namespace ll::gui {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+fs::file_time_type writeTime(const std::string& path) {
+  std::error_code ec;
+  const auto t = fs::last_write_time(path, ec);
+  return ec ? fs::file_time_type{} : t;
+}
+
+// Copies the values of `from` whose names `to` also declares (switching
+// technique keeps e.g. light_samples when both have it).
+void carryOver(const ParamSet& from, ParamSet& to) {
+  for (const ParamDecl& d : from.decls())
+    if (to.has(d.name)) {
+      try {
+        to.set(d.name, from.text(d.name));
+      } catch (const UserError&) {  // same name, other range: keep the default
+      }
+    }
+}
+
+bool isPresetFile(const std::string& path) {
+  if (fs::path(path).extension() != ".json") return false;
+  std::ifstream in(path);
+  std::string head(4096, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<size_t>(in.gcount()));
+  return head.find("\"lightlab_preset\"") != std::string::npos;
+}
+
+}  // namespace
+
+void initPanes(AppState& app) {
+  const auto& techs = techniques();
+  const auto& accels = accelerators();
+  for (int i = 0; i < kMaxPanes; ++i) {
+    const size_t t = std::min(static_cast<size_t>(i), techs.size() - 1);
+    setTechnique(app, i, techs[t].name);
+    setAccelerator(app, i, accels.size() > 1 ? accels[1].name : accels[0].name);
+  }
+}
+
+void addMessage(AppState& app, const std::string& text, bool error) {
+  app.messages.push_back({text, error, Clock::now()});
+  if (app.messages.size() > 50) app.messages.erase(app.messages.begin());
+}
+
+void openScene(AppState& app, const std::string& path, bool keepCamera) {
+  app.loadingPath = path;
+  app.loadKeepsCamera = keepCamera;
+  app.loading = std::async(std::launch::async,
+                           [path]() -> std::shared_ptr<const Scene> { return std::make_shared<Scene>(loadScene(path)); });
+}
+
+void pollSceneLoad(AppState& app) {
+  if (!app.loading.valid() || app.loading.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
+  const std::string path = app.loadingPath;
+  app.loadingPath.clear();
+  try {
+    std::shared_ptr<const Scene> scene = app.loading.get();
+    const bool sameFile = path == app.scenePath;
+    app.scene = std::move(scene);
+    app.scenePath = path;
+    ++app.sceneVersion;
+    if (!(app.loadKeepsCamera && sameFile) || !cameraIsValid(app.camera)) app.camera = app.scene->camera;
+    app.cameraChanged = true;
+    for (PaneState& p : app.panes) p.dirty = true;
+    addMessage(app, (sameFile ? "reloaded " : "opened ") + path, false);
+  } catch (const std::exception& e) {  // the previous scene stays usable
+    addMessage(app, e.what());
+  }
+  // Remember the file's time even on failure, so a broken file is not reloaded in a loop.
+  app.sceneWriteTime = writeTime(path);
+  if (app.scenePath != path) app.sceneWriteTime = writeTime(app.scenePath);
+}
+
+void watchSceneFile(AppState& app) {
+  static thread_local Clock::time_point lastCheck;
+  if (!app.autoReload || app.scenePath.empty() || !app.loadingPath.empty()) return;
+  const auto now = Clock::now();
+  if (now - lastCheck < std::chrono::milliseconds(500)) return;
+  lastCheck = now;
+  const auto t = writeTime(app.scenePath);
+  if (t != fs::file_time_type{} && t != app.sceneWriteTime) {
+    app.sceneWriteTime = t;
+    openScene(app, app.scenePath, true);
+  }
+}
+
+void waitForSceneLoad(AppState& app) {
+  if (app.loading.valid()) app.loading.wait();
+  pollSceneLoad(app);
+}
+
+void openDroppedFile(AppState& app, const std::string& path) {
+  if (isPresetFile(path))
+    loadPresetFile(app, path);
+  else
+    openScene(app, path);
+}
+
+void setTechnique(AppState& app, int paneIndex, const std::string& name) {
+  PaneState& pane = app.panes.at(static_cast<size_t>(paneIndex));
+  try {
+    const TechniqueInfo& info = findTechnique(name);
+    ParamSet params("technique '" + info.name + "'", info.params);
+    carryOver(pane.techniqueParams, params);
+    pane.technique = info.name;
+    pane.techniqueParams = std::move(params);
+    pane.dirty = true;
+  } catch (const UserError& e) {
+    addMessage(app, e.what());
+  }
+}
+
+void setAccelerator(AppState& app, int paneIndex, const std::string& name) {
+  PaneState& pane = app.panes.at(static_cast<size_t>(paneIndex));
+  try {
+    const AcceleratorInfo& info = findAccelerator(name);
+    ParamSet params("accelerator '" + info.name + "'", info.params);
+    carryOver(pane.accelParams, params);
+    pane.accelerator = info.name;
+    pane.accelParams = std::move(params);
+    pane.dirty = true;
+  } catch (const UserError& e) {
+    addMessage(app, e.what());
+  }
+}
+
+void applyPreset(AppState& app, const ViewPreset& preset) {
+  // Validate everything first, so a bad preset changes nothing.
+  std::array<PaneState, kMaxPanes> panes;
+  try {
+    for (int i = 0; i < kMaxPanes; ++i) {
+      const PaneSetup& setup = preset.panes.at(static_cast<size_t>(i));
+      PaneState& p = panes[static_cast<size_t>(i)];
+      const TechniqueInfo& t = findTechnique(setup.technique);
+      const AcceleratorInfo& a = findAccelerator(setup.accelerator);
+      p.technique = t.name;
+      p.accelerator = a.name;
+      p.techniqueParams = ParamSet("technique '" + t.name + "'", t.params);
+      p.accelParams = ParamSet("accelerator '" + a.name + "'", a.params);
+      for (const auto& [k, v] : setup.techniqueParams) p.techniqueParams.set(k, v);
+      for (const auto& [k, v] : setup.accelParams) p.accelParams.set(k, v);
+      p.spp = setup.spp;
+    }
+  } catch (const std::exception& e) {
+    addMessage(app, std::string("preset not applied: ") + e.what());
+    return;
+  }
+  for (int i = 0; i < kMaxPanes; ++i) {
+    PaneState& dst = app.panes[static_cast<size_t>(i)];
+    PaneState& src = panes[static_cast<size_t>(i)];
+    dst.technique = src.technique;
+    dst.accelerator = src.accelerator;
+    dst.techniqueParams = src.techniqueParams;
+    dst.accelParams = src.accelParams;
+    dst.spp = src.spp;
+    dst.dirty = true;
+  }
+  app.paneCount = preset.paneCount;
+  app.compare = preset.compare;
+  app.width = preset.width;
+  app.height = preset.height;
+  app.exposure = preset.exposure;
+  app.uiScale = preset.uiScale;
+  const bool sameScene = !app.scenePath.empty() && fs::exists(preset.scene) && fs::exists(app.scenePath) &&
+                         fs::equivalent(preset.scene, app.scenePath);
+  if (preset.camera) {
+    app.camera = *preset.camera;
+    app.cameraChanged = true;
+  }
+  if (!sameScene) openScene(app, preset.scene, preset.camera.has_value());
+}
+
+bool loadPresetFile(AppState& app, const std::string& path) {
+  try {
+    applyPreset(app, loadPreset(path));
+    addMessage(app, "preset " + path, false);
+    return true;
+  } catch (const std::exception& e) {
+    addMessage(app, e.what());
+    return false;
+  }
+}
+
+ViewPreset capturePreset(const AppState& app) {
+  ViewPreset p;
+  p.scene = app.scenePath;
+  p.camera = app.camera;
+  p.width = app.width;
+  p.height = app.height;
+  p.paneCount = app.paneCount;
+  p.compare = app.compare;
+  p.exposure = app.exposure;
+  p.uiScale = app.uiScale;
+  for (const PaneState& pane : app.panes) {
+    PaneSetup s;
+    s.technique = pane.technique;
+    s.accelerator = pane.accelerator;
+    s.spp = pane.spp;
+    for (const ParamDecl& d : pane.techniqueParams.decls()) s.techniqueParams[d.name] = pane.techniqueParams.text(d.name);
+    for (const ParamDecl& d : pane.accelParams.decls()) s.accelParams[d.name] = pane.accelParams.text(d.name);
+    p.panes.push_back(s);
+  }
+  return p;
+}
+
+bool savePresetFile(AppState& app, const std::string& path) {
+  try {
+    savePreset(capturePreset(app), path);
+    addMessage(app, "saved preset " + path, false);
+    return true;
+  } catch (const std::exception& e) {
+    addMessage(app, e.what());
+    return false;
+  }
+}
+
+void resetCamera(AppState& app) {
+  if (!app.scene) return;
+  app.camera = app.scene->camera;
+  app.cameraChanged = true;
+}
+
+void frameScene(AppState& app) {
+  if (!app.scene) return;
+  const Bounds3 b = app.scene->geometry.sceneBounds();
+  if (b.empty()) return;
+  Camera c = app.camera;
+  c.width = renderSettings(app, app.panes[0]).width;
+  c.height = renderSettings(app, app.panes[0]).height;
+  frameBounds(c, b);
+  app.camera.eye = c.eye;
+  app.camera.target = c.target;
+  app.cameraChanged = true;
+}
+
+RenderSettings renderSettings(const AppState& app, const PaneState& pane) {
+  RenderSettings s;
+  const Camera& sceneCamera = app.scene ? app.scene->camera : app.camera;
+  s.width = app.width > 0 ? app.width : sceneCamera.width;
+  s.height = app.height > 0 ? app.height : sceneCamera.height;
+  if (app.width > 0 && app.height == 0) s.height = std::max(1, app.width * sceneCamera.height / sceneCamera.width);
+  if (app.height > 0 && app.width == 0) s.width = std::max(1, app.height * sceneCamera.width / sceneCamera.height);
+  s.spp = pane.spp;
+  s.camera = app.camera;
+  return s;
+}
+
+void submitPanes(AppState& app) {
+  if (!app.scene) return;
+  const bool all = app.cameraChanged;
+  app.cameraChanged = false;
+  for (int i = 0; i < kMaxPanes; ++i) {
+    PaneState& pane = app.panes[static_cast<size_t>(i)];
+    if (!paneActive(app, i)) {
+      if (pane.dirty || all) pane.renderer->stop();
+      pane.dirty = true;  // render again when shown
+      continue;
+    }
+    if (!pane.dirty && !all) continue;
+    pane.dirty = false;
+    if (!cameraIsValid(app.camera)) {
+      addMessage(app, "the camera is invalid (eye = target, up parallel to the view, or fov outside (0, 180))");
+      continue;
+    }
+    RenderRequest r;
+    r.scene = app.scene;
+    r.sceneVersion = app.sceneVersion;
+    r.technique = pane.technique;
+    r.accelerator = pane.accelerator;
+    r.techniqueParams = pane.techniqueParams;
+    r.accelParams = pane.accelParams;
+    r.settings = renderSettings(app, pane);
+    pane.renderer->submit(std::move(r));
+  }
+}
+
+void refreshPanes(AppState& app) {
+  for (PaneState& pane : app.panes) pane.shown = pane.renderer->snapshot();
+  const int ref = app.compare.reference;
+  for (int i = 0; i < kMaxPanes; ++i) {
+    PaneState& pane = app.panes[static_cast<size_t>(i)];
+    if (ref < 0 || ref >= kMaxPanes || i == ref) {
+      pane.hasError = false;
+      continue;
+    }
+    const PaneSnapshot& refShot = app.panes[static_cast<size_t>(ref)].shown;
+    if (!pane.shown.image || !refShot.image || pane.shown.preview || refShot.preview ||
+        pane.shown.image->width() != refShot.image->width() || pane.shown.image->height() != refShot.image->height()) {
+      pane.hasError = false;
+      continue;
+    }
+    if (pane.hasError && pane.errorVersions[0] == pane.shown.version && pane.errorVersions[1] == refShot.version) continue;
+    pane.error = compareImages(*pane.shown.image, *refShot.image);
+    pane.hasError = true;
+    pane.errorVersions[0] = pane.shown.version;
+    pane.errorVersions[1] = refShot.version;
+  }
+}
+
+bool paneActive(const AppState& app, int pane) {
+  if (pane < app.paneCount || pane == app.compare.reference) return true;
+  return app.compare.mode != CompareMode::SideBySide && (pane == app.compare.paneA || pane == app.compare.paneB);
+}
+
+bool allPanesFinished(const AppState& app) {
+  if (!app.loadingPath.empty()) return false;
+  if (!app.scene) return true;  // nothing to render (the scene failed to load)
+  for (int i = 0; i < kMaxPanes; ++i) {
+    const PaneState& p = app.panes[static_cast<size_t>(i)];
+    if (paneActive(app, i) && (p.dirty || !p.renderer->finished())) return false;
+  }
+  return true;
+}
+
+std::vector<std::string> findSceneFiles(const std::vector<std::string>& folders) {
+  std::vector<std::string> files;
+  for (const std::string& folder : folders) {
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(folder, ec)) {
+      const fs::path p = entry.path();
+      if (!entry.is_regular_file() || (p.extension() != ".json" && p.extension() != ".obj")) continue;
+      if (p.filename() == "scene.schema.json" || isPresetFile(p.string())) continue;
+      files.push_back(p.lexically_normal().string());
+    }
+  }
+  std::sort(files.begin(), files.end());
+  files.erase(std::unique(files.begin(), files.end()), files.end());
+  return files;
+}
+
+}  // namespace ll::gui

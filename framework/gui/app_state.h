@@ -1,0 +1,99 @@
+// Everything the GUI knows, in one explicit struct: the scene, the shared
+// camera, the panes and their renderers, the compare mode and the messages.
+// The main loop (gui_app.cpp) owns one AppState; the panels read and edit it;
+// app_actions.h holds the operations that change it.
+#pragma once
+
+#include <array>
+#include <chrono>
+#include <cstdint>
+#include <filesystem>
+#include <future>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/params.h"
+#include "gui/gl_texture.h"
+#include "gui/pane_renderer.h"
+#include "gui/view_preset.h"
+#include "metrics/image_metrics.h"
+#include "scene/scene.h"
+
+namespace ll::gui {
+
+struct PaneState {
+  std::string technique = "raycast";
+  std::string accelerator = "none";
+  ParamSet techniqueParams, accelParams;  // live values; their declarations come from the registries
+  int spp = 16;
+  std::unique_ptr<PaneRenderer> renderer = std::make_unique<PaneRenderer>();
+  bool dirty = true;  // settings changed since the last submit
+
+  PaneSnapshot shown;  // copied from the renderer once per UI frame
+  GlTexture texture;
+  uint64_t uploadedVersion = 0;
+  float uploadedExposure = 0.0f;
+  // Error against the reference pane, recomputed when either image changes.
+  bool hasError = false;
+  ImageError error;
+  uint64_t errorVersions[2] = {0, 0};
+};
+
+struct DiffState {  // the difference heatmap of pane A against pane B
+  GlTexture texture;
+  uint64_t versions[2] = {0, 0};
+  int panes[2] = {-1, -1};
+  DiffMode mode = DiffMode::Absolute;
+  float requestedMax = -1.0f;
+  float usedMax = 0.0f;
+  bool valid = false;
+};
+
+struct Message {
+  std::string text;
+  bool error = true;
+  std::chrono::steady_clock::time_point when;
+};
+
+struct AppState {
+  // --- scene -----------------------------------------------------------------
+  std::string scenePath;
+  std::shared_ptr<const Scene> scene;  // null until the first scene loads
+  uint64_t sceneVersion = 0;
+  std::filesystem::file_time_type sceneWriteTime{};
+  bool autoReload = true;
+  std::string loadingPath;                         // non-empty while a load runs
+  std::future<std::shared_ptr<const Scene>> loading;
+  bool loadKeepsCamera = false;                    // a reload keeps the view; opening a new scene resets it
+  std::vector<std::string> sceneFiles;             // the file list of the "open" menu
+  char pathInput[512] = {};
+
+  // --- view ------------------------------------------------------------------
+  Camera camera;          // shared by every pane
+  bool cameraChanged = false;
+  int width = 0, height = 0;  // render size in pixels (0 = the scene camera's)
+  int paneCount = 2;
+  std::array<PaneState, kMaxPanes> panes;
+  CompareSetup compare;
+  DiffState diff;
+  float exposure = 0.0f;  // display exposure, stops
+  float uiScale = 1.0f;   // user's scale, times the monitor's content scale
+  float contentScale = 1.0f;
+  float appliedFontScale = 0.0f;
+  bool fullscreen = false;
+  int windowedPos[2] = {100, 100}, windowedSize[2] = {1280, 800};
+  bool draggingWipe = false;
+
+  // --- files and messages ------------------------------------------------------
+  char presetInput[512] = "preset.json";
+  std::vector<std::string> droppedFiles;  // filled by the GLFW drop callback
+  std::vector<Message> messages;          // newest last
+  std::string screenshotRequest;          // non-empty: save the next frame there
+  // Where each pane's image was drawn last frame (window pixels, top-left
+  // origin), for the screenshot sidecar: x, y, w, h per pane; w = 0 if hidden.
+  std::array<std::array<float, 4>, kMaxPanes> paneRects{};
+  std::array<float, 4> compareRect{};
+};
+
+}  // namespace ll::gui

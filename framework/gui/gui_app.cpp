@@ -1,0 +1,234 @@
+// The main loop, in the canonical Dear ImGui order: poll events, start the
+// frame, build the UI, render, swap. Rendering itself happens on the pane
+// workers; this loop only copies their latest images.
+#include "gui/gui_app.h"
+
+#include <algorithm>
+#include <chrono>
+#include <ctime>
+#include <optional>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include <GLFW/glfw3.h>
+#include <GL/gl.h>
+#include <imgui.h>
+#include "backends/imgui_impl_glfw.h"
+#include "backends/imgui_impl_opengl3.h"
+
+#include "core/error.h"
+#include "gui/app_actions.h"
+#include "gui/screenshot.h"
+#include "gui/side_panel.h"
+#include "gui/viewport.h"
+
+namespace ll::gui {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* kFontPath = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";  // Debian fonts-dejavu-core
+constexpr float kBaseFontPixels = 15.0f;
+constexpr float kPanelWidth = 400.0f;  // at UI scale 1
+
+void onGlfwError(int code, const char* text) { std::fprintf(stderr, "lightlab: GLFW error %d: %s\n", code, text); }
+
+void onDrop(GLFWwindow* window, int count, const char** paths) {
+  auto* app = static_cast<AppState*>(glfwGetWindowUserPointer(window));
+  for (int i = 0; i < count; ++i) app->droppedFiles.emplace_back(paths[i]);
+}
+
+// Rebuilds the font atlas when the effective scale changed (between frames).
+void applyUiScale(AppState& app) {
+  const float scale = std::clamp(app.uiScale, 0.5f, 4.0f) * app.contentScale;
+  if (std::abs(scale - app.appliedFontScale) < 1e-3f) return;
+  ImGuiIO& io = ImGui::GetIO();
+  io.Fonts->Clear();
+  if (fs::exists(kFontPath))
+    io.Fonts->AddFontFromFileTTF(kFontPath, std::round(kBaseFontPixels * scale));
+  else {
+    ImFontConfig config;
+    config.SizePixels = std::round(13.0f * scale);
+    io.Fonts->AddFontDefault(&config);
+  }
+  io.Fonts->Build();
+  ImGui_ImplOpenGL3_DestroyFontsTexture();
+  ImGui_ImplOpenGL3_CreateFontsTexture();
+  ImGuiStyle style;
+  ImGui::StyleColorsDark(&style);
+  style.ScaleAllSizes(scale);
+  ImGui::GetStyle() = style;
+  app.appliedFontScale = scale;
+}
+
+std::string timestampedName() {
+  const std::time_t now = std::time(nullptr);
+  char buf[64];
+  std::strftime(buf, sizeof buf, "lightlab_%Y%m%d_%H%M%S.png", std::localtime(&now));
+  return buf;
+}
+
+// One frame of work that is not drawing: files, scene loads, pane renderers.
+void updateApp(AppState& app) {
+  for (const std::string& path : app.droppedFiles) openDroppedFile(app, path);
+  app.droppedFiles.clear();
+  pollSceneLoad(app);
+  watchSceneFile(app);
+  submitPanes(app);
+  refreshPanes(app);
+}
+
+void takeScreenshot(AppState& app, GLFWwindow* window, const std::string& path) {
+  int fbW = 0, fbH = 0, winW = 0, winH = 0;
+  glfwGetFramebufferSize(window, &fbW, &fbH);
+  glfwGetWindowSize(window, &winW, &winH);
+  try {
+    saveFramebufferPng(path, fbW, fbH);
+    saveScreenshotSidecar(app, path, fbW, fbH, winW > 0 ? static_cast<float>(fbW) / winW : 1.0f);
+    addMessage(app, "screenshot " + path, false);
+    std::printf("%s\n", path.c_str());
+    std::fflush(stdout);
+  } catch (const UserError& e) {
+    addMessage(app, e.what());
+  }
+}
+
+}  // namespace
+
+std::vector<std::string> defaultSceneFolders() {
+  std::vector<std::string> folders{"data/scenes", "build/data/scenes"};
+#ifdef LIGHTLAB_SOURCE_DATA_DIR
+  folders.push_back(LIGHTLAB_SOURCE_DATA_DIR "/scenes");
+#endif
+#ifdef LIGHTLAB_BUILD_DATA_DIR
+  folders.push_back(LIGHTLAB_BUILD_DATA_DIR "/scenes");
+#endif
+  return folders;
+}
+
+std::string defaultScenePath() {
+  for (const std::string& folder : defaultSceneFolders()) {
+    const fs::path p = fs::path(folder) / "cornell_box.json";
+    if (fs::exists(p)) return p.lexically_normal().string();
+  }
+  throwUserError("cannot find the default scene data/scenes/cornell_box.json; name a scene: lightlab gui SCENE");
+}
+
+int runGui(const GuiOptions& options) {
+  // Validate the named files before opening a window, so a typo fails fast.
+  std::optional<ViewPreset> preset;
+  if (!options.preset.empty()) preset = loadPreset(options.preset);
+  if (!options.scene.empty() && !fs::exists(options.scene)) throwUserError(options.scene + ": cannot open file");
+
+  glfwSetErrorCallback(onGlfwError);
+  if (!glfwInit()) throwUserError("cannot open a window (no display?); use `lightlab render` headless");
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);
+  GLFWwindow* window = glfwCreateWindow(options.windowWidth, options.windowHeight, "LightLab", nullptr, nullptr);
+  if (!window) {
+    glfwTerminate();
+    throwUserError("cannot create an OpenGL 3.3 core window; use `lightlab render` headless");
+  }
+  glfwMakeContextCurrent(window);
+  glfwSwapInterval(1);
+
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;  // the layout is fixed; presets hold the state worth keeping
+  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  ImGui_ImplOpenGL3_Init("#version 330");
+  ImGui_ImplOpenGL3_CreateDeviceObjects();  // before applyUiScale replaces the font texture
+
+  int exitStatus = 0;
+  {
+    AppState app;
+    app.sceneFiles = findSceneFiles(options.sceneFolders.empty() ? defaultSceneFolders() : options.sceneFolders);
+    initPanes(app);
+    glfwSetWindowUserPointer(window, &app);
+    glfwSetDropCallback(window, onDrop);
+    float xs = 1.0f, ys = 1.0f;
+    glfwGetWindowContentScale(window, &xs, &ys);
+    app.contentScale = std::max(xs, ys);
+
+    if (preset) applyPreset(app, *preset);
+    if (!options.scene.empty())
+      openScene(app, options.scene, preset && preset->camera);
+    else if (!preset)
+      openScene(app, defaultScenePath());
+    if (options.uiScale > 0.0f) app.uiScale = options.uiScale;
+    std::snprintf(app.pathInput, sizeof app.pathInput, "%s", options.scene.c_str());
+
+    const bool screenshotMode = !options.screenshot.empty();
+    if (screenshotMode) waitForSceneLoad(app);
+    const auto started = std::chrono::steady_clock::now();
+    int frame = 0;
+    while (!glfwWindowShouldClose(window)) {
+      // 1. Events. Waiting (at most 1/30 s) instead of spinning leaves the cores to the renderers.
+      glfwWaitEventsTimeout(1.0 / 30.0);
+      applyUiScale(app);
+      updateApp(app);
+
+      // 2. New frame.
+      ImGui_ImplOpenGL3_NewFrame();
+      ImGui_ImplGlfw_NewFrame();
+      ImGui::NewFrame();
+
+      // 3. The UI: side panel, image area, input, keys.
+      const ImGuiIO& io = ImGui::GetIO();
+      const float panelW = std::min(kPanelWidth * app.appliedFontScale, io.DisplaySize.x * 0.5f);
+      drawSidePanel(app, window, panelW, io.DisplaySize.y);
+      const float vx = panelW, vw = std::max(io.DisplaySize.x - panelW, 1.0f);
+      drawViewport(app, vx, 0.0f, vw, io.DisplaySize.y);
+      handleCameraInput(app, window, vx, 0.0f, vw, io.DisplaySize.y);
+      if (!io.WantCaptureKeyboard) {
+        if (ImGui::IsKeyPressed(GLFW_KEY_F11, false)) toggleFullscreen(app, window);
+        if (ImGui::IsKeyPressed(GLFW_KEY_F12, false)) app.screenshotRequest = timestampedName();
+      }
+
+      // 4. Render and present.
+      ImGui::Render();
+      int fbW = 0, fbH = 0;
+      glfwGetFramebufferSize(window, &fbW, &fbH);
+      glViewport(0, 0, fbW, fbH);
+      glClearColor(0.11f, 0.11f, 0.125f, 1.0f);
+      glClear(GL_COLOR_BUFFER_BIT);
+      ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+      ++frame;
+      if (!app.screenshotRequest.empty()) {
+        takeScreenshot(app, window, app.screenshotRequest);
+        app.screenshotRequest.clear();
+      }
+      if (screenshotMode && frame >= options.frames) {
+        const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+        const bool timedOut = elapsed > options.screenshotTimeout;
+        // Two frames after everything finished, so the last images are uploaded and drawn.
+        static int settled = 0;
+        settled = allPanesFinished(app) ? settled + 1 : 0;
+        if (settled >= 2 || timedOut) {
+          takeScreenshot(app, window, options.screenshot);
+          if (timedOut) {
+            std::fprintf(stderr, "lightlab: error: screenshot taken after the %.0f s timeout, before every pane finished\n",
+                         options.screenshotTimeout);
+            exitStatus = 1;
+          }
+          glfwSetWindowShouldClose(window, GLFW_TRUE);
+        }
+      }
+      glfwSwapBuffers(window);
+    }
+    for (PaneState& p : app.panes) p.renderer.reset();  // join workers while the GL context still exists
+  }
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+  glfwDestroyWindow(window);
+  glfwTerminate();
+  return exitStatus;
+}
+
+}  // namespace ll::gui

@@ -1,0 +1,85 @@
+// One GUI pane's renderer: a worker thread that runs a RenderJob pass by pass
+// and publishes the resolved image after every pass. submit() replaces what
+// is being rendered (camera, parameters, technique, scene) and returns at
+// once: the running job is cancelled and the worker starts the newest
+// request. The UI thread only ever copies a snapshot, so no UI frame waits
+// on a render.
+#pragma once
+
+#include <condition_variable>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+
+#include "core/image.h"
+#include "core/params.h"
+#include "render/render_job.h"
+#include "render/render_stats.h"
+#include "scene/scene.h"
+
+namespace ll::gui {
+
+struct RenderRequest {
+  std::shared_ptr<const Scene> scene;
+  uint64_t sceneVersion = 0;  // changes whenever the scene is (re)loaded: the accelerator is rebuilt
+  std::string technique, accelerator;
+  ParamSet techniqueParams, accelParams;
+  RenderSettings settings;
+};
+
+struct PaneSnapshot {
+  enum class Phase { Idle, Building, Rendering, Done, Failed };
+  Phase phase = Phase::Idle;
+  uint64_t version = 0;                 // increases with every published image
+  std::shared_ptr<const Image> image;   // linear radiance, stub pixels striped magenta
+  bool preview = false;                 // image is the quick low-resolution first look
+  int passes = 0, totalPasses = 0;
+  double seconds = 0.0;                 // render time of the current request so far (excludes build)
+  double buildSeconds = 0.0;            // accelerator build of the current scene
+  RenderStats stats;                    // as of the last completed pass
+  std::map<std::string, std::string> missingTasks;  // student task id -> what
+  std::string error;                    // set when phase == Failed
+};
+
+class PaneRenderer {
+ public:
+  PaneRenderer();
+  ~PaneRenderer();  // cancels and joins the worker
+  PaneRenderer(const PaneRenderer&) = delete;
+  PaneRenderer& operator=(const PaneRenderer&) = delete;
+
+  // Cancels the current render and queues `request`; returns immediately.
+  void submit(RenderRequest request);
+  // Stops rendering; the last image stays.
+  void stop();
+  PaneSnapshot snapshot() const;
+  // True once the latest request has finished (or failed) and nothing is queued.
+  bool finished() const;
+
+ private:
+  void workerLoop();
+  void render(const RenderRequest& request);
+  void publish(const PaneSnapshot& s);
+
+  mutable std::mutex mutex_;
+  std::condition_variable wake_;
+  std::optional<RenderRequest> pending_;
+  RenderJob* running_ = nullptr;  // guarded by mutex_, for cancel
+  bool quit_ = false;
+  bool busy_ = false;
+  PaneSnapshot snapshot_;
+
+  // Worker-only state: the accelerator cache and the last pass time.
+  std::shared_ptr<const Accelerator> accel_;
+  std::string accelKey_;
+  double buildSeconds_ = 0.0;
+  double lastPassSeconds_ = 0.0;
+
+  std::thread worker_;  // last member: starts after everything above exists
+};
+
+}  // namespace ll::gui

@@ -1,0 +1,70 @@
+#include "gui/screenshot.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <vector>
+
+#include <GL/gl.h>
+#include <nlohmann/json.hpp>
+#include <stb/stb_image_write.h>
+
+#include "core/error.h"
+
+namespace ll::gui {
+
+void saveFramebufferPng(const std::string& path, int width, int height) {
+  std::vector<uint8_t> pixels(static_cast<size_t>(width) * height * 4);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadBuffer(GL_BACK);
+  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+  // GL rows go bottom-up; PNG rows top-down. The window is opaque.
+  std::vector<uint8_t> flipped(pixels.size());
+  const size_t row = static_cast<size_t>(width) * 4;
+  for (int y = 0; y < height; ++y)
+    for (size_t i = 0; i < row; ++i)
+      flipped[static_cast<size_t>(y) * row + i] =
+          (i % 4 == 3) ? 255 : pixels[static_cast<size_t>(height - 1 - y) * row + i];
+  if (!stbi_write_png(path.c_str(), width, height, 4, flipped.data(), static_cast<int>(row)))
+    throwUserError(path + ": cannot write screenshot");
+}
+
+std::string saveScreenshotSidecar(const AppState& app, const std::string& path, int width, int height,
+                                  float pixelScale) {
+  using nlohmann::json;
+  const auto rect = [&](const std::array<float, 4>& r) {
+    return json::array({r[0] * pixelScale, r[1] * pixelScale, r[2] * pixelScale, r[3] * pixelScale});
+  };
+  static const char* kPhases[] = {"idle", "building", "rendering", "done", "failed"};
+  json j{{"width", width}, {"height", height}, {"scene", app.scenePath}, {"pane_count", app.paneCount}};
+  j["panes"] = json::array();
+  for (int i = 0; i < kMaxPanes; ++i) {
+    const PaneState& p = app.panes[static_cast<size_t>(i)];
+    json pj{{"index", i},
+            {"technique", p.technique},
+            {"accelerator", p.accelerator},
+            {"phase", kPhases[static_cast<int>(p.shown.phase)]},
+            {"passes", p.shown.passes},
+            {"total_passes", p.shown.totalPasses},
+            {"rect", rect(app.paneRects[static_cast<size_t>(i)])},
+            {"missing_tasks", p.shown.missingTasks},
+            {"error", p.shown.error}};
+    if (p.shown.image) pj["image_size"] = {p.shown.image->width(), p.shown.image->height()};
+    j["panes"].push_back(pj);
+  }
+  j["compare"] = {{"mode", compareModeName(app.compare.mode)},
+                  {"a", app.compare.paneA},
+                  {"b", app.compare.paneB},
+                  {"wipe", app.compare.wipe},
+                  {"rect", rect(app.compareRect)},
+                  {"diff_max", app.diff.usedMax}};
+  j["messages"] = json::array();
+  for (const Message& m : app.messages) j["messages"].push_back({{"text", m.text}, {"error", m.error}});
+  const std::string sidecar = std::filesystem::path(path).replace_extension(".json").string();
+  std::ofstream out(sidecar);
+  if (!out) throwUserError(sidecar + ": cannot write screenshot sidecar");
+  out << j.dump(2) << "\n";
+  return sidecar;
+}
+
+}  // namespace ll::gui

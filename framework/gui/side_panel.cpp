@@ -1,0 +1,252 @@
+#include "gui/side_panel.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <string>
+
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include "core/error.h"
+#include "gui/app_actions.h"
+#include "gui/param_widgets.h"
+#include "gui/viewport.h"
+#include "modules/registry.h"
+
+namespace ll::gui {
+
+namespace {
+
+void helpMarker(const char* text) {
+  ImGui::SameLine();
+  ImGui::TextDisabled("(?)");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
+}
+
+void sceneSection(AppState& app) {
+  if (!ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  ImGui::TextWrapped("%s", app.scenePath.empty() ? "(none)" : app.scenePath.c_str());
+  if (!app.loadingPath.empty()) ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "loading %s ...", app.loadingPath.c_str());
+  if (app.scene) {
+    ImGui::Text("%u triangles, %zu spheres", app.scene->geometry.triangleCount(), app.scene->geometry.spheres.size());
+    ImGui::TextWrapped("effects: %s", joinNames(app.scene->effects.names()).c_str());
+  }
+  if (ImGui::BeginCombo("open", "choose a scene file")) {
+    for (const std::string& f : app.sceneFiles)
+      if (ImGui::Selectable(f.c_str(), f == app.scenePath)) openScene(app, f);
+    ImGui::EndCombo();
+  }
+  helpMarker("Scenes found in data/scenes and the build's generated scenes.\nYou can also drop a scene or preset file on the window.");
+  ImGui::InputText("path", app.pathInput, sizeof app.pathInput);
+  ImGui::SameLine();
+  if (ImGui::Button("Open")) openScene(app, app.pathInput);
+  if (ImGui::Button("Reload")) openScene(app, app.scenePath, true);
+  ImGui::SameLine();
+  ImGui::Checkbox("reload on change", &app.autoReload);
+}
+
+void cameraSection(AppState& app) {
+  if (!ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  Camera c = app.camera;
+  bool edited = false;
+  const float step = app.scene ? std::max(app.scene->geometry.sceneBounds().diagonal() * 0.002f, 1e-4f) : 0.01f;
+  edited |= ImGui::DragFloat3("eye", &c.eye.x, step, 0, 0, "%.3f");
+  edited |= ImGui::DragFloat3("target", &c.target.x, step, 0, 0, "%.3f");
+  edited |= ImGui::DragFloat3("up", &c.up.x, 0.01f, -1, 1, "%.3f");
+  edited |= ImGui::SliderFloat("fov y (deg)", &c.fovYDeg, 1.0f, 150.0f, "%.1f");
+  if (edited) {
+    app.camera = c;
+    app.cameraChanged = true;
+  }
+  if (ImGui::Button("Frame scene")) frameScene(app);
+  ImGui::SameLine();
+  if (ImGui::Button("Reset")) resetCamera(app);
+  helpMarker("Over the image: left drag orbits, right/middle drag pans, wheel zooms.\nW/A/S/D fly, Q/E down/up, Shift = faster.");
+}
+
+void layoutSection(AppState& app) {
+  if (!ImGui::CollapsingHeader("Layout and compare", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  int count = app.paneCount;
+  ImGui::Text("panes");
+  for (int n : {1, 2, 4}) {
+    ImGui::SameLine();
+    char label[8];
+    std::snprintf(label, sizeof label, "%d", n);
+    if (ImGui::RadioButton(label, count == n)) app.paneCount = n;
+  }
+  int mode = static_cast<int>(app.compare.mode);
+  ImGui::RadioButton("side by side", &mode, 0);
+  ImGui::SameLine();
+  ImGui::RadioButton("wipe", &mode, 1);
+  ImGui::SameLine();
+  ImGui::RadioButton("difference", &mode, 2);
+  app.compare.mode = static_cast<CompareMode>(mode);
+  const char* letters[] = {"A", "B", "C", "D"};
+  if (app.compare.mode != CompareMode::SideBySide) {
+    ImGui::SetNextItemWidth(60 * ImGui::GetIO().FontGlobalScale);
+    ImGui::Combo("##a", &app.compare.paneA, letters, kMaxPanes);
+    ImGui::SameLine();
+    ImGui::Text(app.compare.mode == CompareMode::Wipe ? "left,  right" : "against");
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(60 * ImGui::GetIO().FontGlobalScale);
+    ImGui::Combo("##b", &app.compare.paneB, letters, kMaxPanes);
+  }
+  if (app.compare.mode == CompareMode::Wipe) ImGui::SliderFloat("split", &app.compare.wipe, 0.0f, 1.0f, "%.2f");
+  if (app.compare.mode == CompareMode::Difference) {
+    int diff = app.compare.diff == DiffMode::Absolute ? 0 : 1;
+    ImGui::RadioButton("absolute", &diff, 0);
+    ImGui::SameLine();
+    ImGui::RadioButton("relative", &diff, 1);
+    app.compare.diff = diff == 0 ? DiffMode::Absolute : DiffMode::Relative;
+    ImGui::SliderFloat("scale max", &app.compare.diffMax, 0.0f, 1.0f, app.compare.diffMax <= 0 ? "auto" : "%.4f",
+                       ImGuiSliderFlags_AlwaysClamp);
+    helpMarker("0 = automatic: the 99th percentile of the error, so a few fireflies do not wash out the map.");
+  }
+  const char* refs[] = {"none", "A", "B", "C", "D"};
+  int ref = app.compare.reference + 1;
+  if (ImGui::Combo("error against", &ref, refs, kMaxPanes + 1)) app.compare.reference = ref - 1;
+  helpMarker("RMSE and SSIM of every other pane against this reference pane, updated as passes arrive.");
+  ImGui::SliderFloat("exposure", &app.exposure, -8.0f, 8.0f, "%+.1f stops");
+  ImGui::SetNextItemWidth(80 * ImGui::GetIO().FontGlobalScale);
+  int size[2] = {app.width, app.height};
+  if (ImGui::InputInt2("render size (0 = scene)", size, ImGuiInputTextFlags_EnterReturnsTrue)) {
+    app.width = std::clamp(size[0], 0, 8192);
+    app.height = std::clamp(size[1], 0, 8192);
+    for (PaneState& p : app.panes) p.dirty = true;
+  }
+}
+
+void statsTable(const PaneState& p) {
+  const PaneSnapshot& s = p.shown;
+  const double rays = static_cast<double>(s.stats.work.totalRays());
+  ImGui::Text("pass %d/%d   %.2f s   %.2f Mrays/s", s.passes, s.totalPasses, s.seconds,
+              s.seconds > 0 ? rays / s.seconds / 1e6 : 0.0);
+  if (ImGui::BeginTable("rays", 2, ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp)) {
+    for (int k = 0; k < kRayKindCount; ++k) {
+      const uint64_t n = s.stats.work.rays[static_cast<size_t>(k)];
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(std::string(kRayKindNames[static_cast<size_t>(k)]).c_str());
+      ImGui::TableNextColumn();
+      ImGui::Text("%llu", static_cast<unsigned long long>(n));
+    }
+    ImGui::EndTable();
+  }
+  const auto& a = s.stats.accel;
+  ImGui::Text("accel build %.3f s, %zu nodes, %.1f KiB", s.buildSeconds, a.nodeCount,
+              static_cast<double>(a.memoryBytes) / 1024.0);
+  if (s.stats.work.nonFinite > 0)
+    ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%llu NaN/Inf samples replaced by 0",
+                       static_cast<unsigned long long>(s.stats.work.nonFinite));
+}
+
+void paneSection(AppState& app, int i) {
+  PaneState& p = app.panes[static_cast<size_t>(i)];
+  char title[96];
+  std::snprintf(title, sizeof title, "Pane %c: %s / %s###pane%d", paneLetter(i), p.technique.c_str(),
+                p.accelerator.c_str(), i);
+  if (!ImGui::CollapsingHeader(title, i < 2 ? ImGuiTreeNodeFlags_DefaultOpen : 0)) return;
+  ImGui::PushID(i);
+  if (ImGui::BeginCombo("technique", p.technique.c_str())) {
+    for (const TechniqueInfo& t : techniques()) {
+      if (ImGui::Selectable(t.name.c_str(), t.name == p.technique)) setTechnique(app, i, t.name);
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", t.help.c_str());
+    }
+    ImGui::EndCombo();
+  }
+  if (ImGui::BeginCombo("accelerator", p.accelerator.c_str())) {
+    for (const AcceleratorInfo& a : accelerators()) {
+      if (ImGui::Selectable(a.name.c_str(), a.name == p.accelerator)) setAccelerator(app, i, a.name);
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", a.help.c_str());
+    }
+    ImGui::EndCombo();
+  }
+  if (ImGui::SliderInt("passes (spp)", &p.spp, 1, 1024, "%d", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp))
+    p.dirty = true;
+  if (paramWidgets(p.techniqueParams)) p.dirty = true;
+  if (!p.accelParams.decls().empty() && ImGui::TreeNode("accelerator parameters")) {
+    if (paramWidgets(p.accelParams)) p.dirty = true;
+    ImGui::TreePop();
+  }
+  if (ImGui::Button("Restart")) p.dirty = true;
+  if (app.scene) {
+    const EffectSet sim = findTechnique(p.technique).simulates;
+    const EffectSet needed = app.scene->effects;
+    ImGui::TextWrapped("simulates: %s", joinNames(EffectSet::fromBits(needed.bits() & sim.bits()).names()).c_str());
+    const EffectSet missed = needed.minus(sim);
+    if (!missed.empty())
+      ImGui::TextColored(ImVec4(1, 0.7f, 0.3f, 1), "misses: %s", joinNames(missed.names()).c_str());
+  }
+  statsTable(p);
+  if (p.hasError) ImGui::Text("vs %c: RMSE %.5g  SSIM %.4f  PSNR %.2f dB", paneLetter(app.compare.reference),
+                              p.error.rmse, p.error.ssim, p.error.psnr);
+  for (const auto& [id, what] : p.shown.missingTasks)
+    ImGui::TextColored(ImVec4(1, 0.4f, 0.9f, 1), "task %s missing: %s", id.c_str(), what.c_str());
+  if (p.shown.phase == PaneSnapshot::Phase::Failed)
+    ImGui::TextColored(ImVec4(1, 0.3f, 0.3f, 1), "%s", p.shown.error.c_str());
+  ImGui::PopID();
+}
+
+void presetSection(AppState& app) {
+  if (!ImGui::CollapsingHeader("Preset")) return;
+  ImGui::InputText("file", app.presetInput, sizeof app.presetInput);
+  if (ImGui::Button("Save")) savePresetFile(app, app.presetInput);
+  ImGui::SameLine();
+  if (ImGui::Button("Load")) loadPresetFile(app, app.presetInput);
+  helpMarker("The whole view: scene, camera, panes with technique, accelerator and parameters, compare mode.\nOpen one with `lightlab gui --preset FILE`.");
+}
+
+void viewSection(AppState& app, GLFWwindow* window) {
+  if (!ImGui::CollapsingHeader("View")) return;
+  ImGui::SliderFloat("UI scale", &app.uiScale, 0.5f, 3.0f, "%.2f");
+  ImGui::Text("monitor content scale %.2f", static_cast<double>(app.contentScale));
+  if (ImGui::Button(app.fullscreen ? "Windowed (F11)" : "Fullscreen (F11)")) toggleFullscreen(app, window);
+  ImGui::SameLine();
+  if (ImGui::Button("Screenshot (F12)")) app.screenshotRequest = "lightlab_screenshot.png";
+}
+
+void messagesSection(AppState& app) {
+  if (!ImGui::CollapsingHeader("Messages", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (ImGui::SmallButton("clear")) app.messages.clear();
+  for (auto it = app.messages.rbegin(); it != app.messages.rend(); ++it)
+    ImGui::TextColored(it->error ? ImVec4(1, 0.45f, 0.45f, 1) : ImVec4(0.7f, 0.9f, 0.7f, 1), "%s", it->text.c_str());
+}
+
+}  // namespace
+
+void toggleFullscreen(AppState& app, GLFWwindow* window) {
+  if (!app.fullscreen) {
+    GLFWmonitor* monitor = glfwGetPrimaryMonitor();
+    const GLFWvidmode* mode = monitor ? glfwGetVideoMode(monitor) : nullptr;
+    if (!mode) return;
+    glfwGetWindowPos(window, &app.windowedPos[0], &app.windowedPos[1]);
+    glfwGetWindowSize(window, &app.windowedSize[0], &app.windowedSize[1]);
+    glfwSetWindowMonitor(window, monitor, 0, 0, mode->width, mode->height, mode->refreshRate);
+  } else {
+    glfwSetWindowMonitor(window, nullptr, app.windowedPos[0], app.windowedPos[1], app.windowedSize[0],
+                         app.windowedSize[1], 0);
+  }
+  app.fullscreen = !app.fullscreen;
+}
+
+void drawSidePanel(AppState& app, GLFWwindow* window, float width, float height) {
+  ImGui::SetNextWindowPos(ImVec2(0, 0));
+  ImGui::SetNextWindowSize(ImVec2(width, height));
+  ImGui::Begin("LightLab", nullptr,
+               ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                   ImGuiWindowFlags_NoBringToFrontOnFocus);
+  ImGui::PushItemWidth(-ImGui::GetFontSize() * 9.0f);
+  sceneSection(app);
+  cameraSection(app);
+  layoutSection(app);
+  for (int i = 0; i < kMaxPanes; ++i)
+    if (paneActive(app, i)) paneSection(app, i);
+  presetSection(app);
+  viewSection(app, window);
+  messagesSection(app);
+  ImGui::PopItemWidth();
+  ImGui::End();
+}
+
+}  // namespace ll::gui

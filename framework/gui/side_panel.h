@@ -1,0 +1,18 @@
+// The control panel on the left of the window: scene, camera, layout and
+// compare mode, one section per pane (technique, accelerator, parameters,
+// statistics), presets, view settings and messages.
+#pragma once
+
+#include "gui/app_state.h"
+
+struct GLFWwindow;
+
+namespace ll::gui {
+
+// Draws the panel at the window's left edge, `width` pixels wide and full height.
+void drawSidePanel(AppState& app, GLFWwindow* window, float width, float height);
+
+// Switches between windowed and fullscreen on the primary monitor.
+void toggleFullscreen(AppState& app, GLFWwindow* window);
+
+}  // namespace ll::gui

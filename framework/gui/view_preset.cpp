@@ -1,0 +1,202 @@
+#include "gui/view_preset.h"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "core/error.h"
+#include "core/params.h"
+#include "modules/registry.h"
+#include "scene/json_document.h"
+#include "scene/scene_loader.h"
+
+namespace ll::gui {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kFormatVersion = 1;
+
+// Reads {"name": value, ...} into `out`, checking each against `decls`.
+std::map<std::string, std::string> parseParams(const JsonNode& node, const std::string& owner,
+                                               const std::vector<ParamDecl>& decls) {
+  node.requireObject();
+  ParamSet check(owner, decls);
+  std::map<std::string, std::string> out;
+  for (auto it = node.json().begin(); it != node.json().end(); ++it) {
+    const JsonNode value = node.child(it.key());
+    std::string text;
+    if (value.json().is_string())
+      text = value.json().get<std::string>();
+    else if (value.json().is_number() || value.json().is_boolean())
+      text = value.json().dump();
+    else
+      value.fail(value.what() + " must be a string, number or boolean");
+    try {
+      check.set(it.key(), text);
+    } catch (const UserError& e) {
+      value.fail(e.what());
+    }
+    out[it.key()] = text;
+  }
+  return out;
+}
+
+template <class Info>
+const Info& findNamed(const JsonNode& node, const std::string& key, const Info& (*find)(const std::string&)) {
+  const std::string name = node.string(key);
+  try {
+    return find(name);
+  } catch (const UserError& e) {
+    node.child(key).fail(e.what());
+  }
+}
+
+PaneSetup parsePane(const JsonNode& n) {
+  n.requireObject();
+  n.allowOnly({"technique", "accelerator", "params", "accel_params", "spp"});
+  PaneSetup p;
+  const TechniqueInfo& t = findNamed<TechniqueInfo>(n, "technique", &findTechnique);
+  p.technique = t.name;
+  if (n.has("accelerator")) p.accelerator = findNamed<AcceleratorInfo>(n, "accelerator", &findAccelerator).name;
+  const AcceleratorInfo& a = findAccelerator(p.accelerator);
+  if (n.has("params")) p.techniqueParams = parseParams(n.child("params"), "technique '" + t.name + "'", t.params);
+  if (n.has("accel_params"))
+    p.accelParams = parseParams(n.child("accel_params"), "accelerator '" + a.name + "'", a.params);
+  p.spp = n.integer("spp", p.spp, 1, 1 << 16);
+  return p;
+}
+
+template <class Enum, size_t N>
+Enum parseChoice(const JsonNode& n, const std::string& key, Enum fallback,
+                 const std::pair<const char*, Enum> (&names)[N]) {
+  if (!n.has(key)) return fallback;
+  const std::string text = n.string(key);
+  std::vector<std::string> allowed;
+  for (const auto& [name, value] : names) {
+    if (text == name) return value;
+    allowed.emplace_back(name);
+  }
+  n.child(key).fail("unknown " + key + " '" + text + "' (allowed: " + joinNames(allowed) + ")");
+}
+
+constexpr std::pair<const char*, CompareMode> kModes[] = {{"side-by-side", CompareMode::SideBySide},
+                                                          {"wipe", CompareMode::Wipe},
+                                                          {"difference", CompareMode::Difference}};
+constexpr std::pair<const char*, DiffMode> kDiffModes[] = {{"absolute", DiffMode::Absolute},
+                                                           {"relative", DiffMode::Relative}};
+
+nlohmann::json vec3Json(const Vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
+
+}  // namespace
+
+const char* compareModeName(CompareMode mode) {
+  for (const auto& [name, value] : kModes)
+    if (value == mode) return name;
+  return "?";
+}
+
+ViewPreset parsePreset(const std::string& text, const std::string& file, const std::string& baseDir) {
+  const JsonDocument doc(text, file);
+  const JsonNode root(doc, doc.root(), "", "");
+  root.requireObject();
+  root.allowOnly({"lightlab_preset", "description", "scene", "camera", "width", "height", "panes", "pane_count",
+                  "compare", "ui_scale", "exposure"});
+  const int version = root.integer("lightlab_preset", 0, 0, 1000);
+  if (version != kFormatVersion)
+    root.fail("not a LightLab view preset: it needs \"lightlab_preset\": " + std::to_string(kFormatVersion));
+
+  ViewPreset p;
+  const std::string scene = root.string("scene");
+  const fs::path scenePath(scene);
+  p.scene = scenePath.is_absolute() ? scene : (fs::path(baseDir) / scenePath).lexically_normal().string();
+  if (root.has("camera")) p.camera = parseCamera(root.child("camera"));
+  p.width = root.integer("width", 0, 0, 16384);
+  p.height = root.integer("height", 0, 0, 16384);
+  p.exposure = root.number("exposure", 0.0f, -20.0f, 20.0f);
+  p.uiScale = root.number("ui_scale", 1.0f, 0.5f, 4.0f);
+
+  const JsonNode panes = root.child("panes");
+  panes.requireArray();
+  if (panes.size() < 1 || panes.size() > static_cast<size_t>(kMaxPanes))
+    panes.fail("panes must list 1 to " + std::to_string(kMaxPanes) + " panes, got " + std::to_string(panes.size()));
+  for (size_t i = 0; i < panes.size(); ++i) p.panes.push_back(parsePane(panes.at(i)));
+  p.paneCount = static_cast<int>(p.panes.size()) == 3 ? 4 : static_cast<int>(p.panes.size());
+  if (root.has("pane_count")) {
+    p.paneCount = root.integer("pane_count", 2, 1, kMaxPanes);
+    if (p.paneCount == 3) root.child("pane_count").fail("pane_count must be 1, 2 or 4");
+  }
+  while (static_cast<int>(p.panes.size()) < kMaxPanes) p.panes.push_back(p.panes.back());
+
+  if (root.has("compare")) {
+    const JsonNode c = root.child("compare");
+    c.requireObject();
+    c.allowOnly({"mode", "wipe", "a", "b", "diff", "diff_max", "reference"});
+    p.compare.mode = parseChoice(c, "mode", p.compare.mode, kModes);
+    p.compare.wipe = c.number("wipe", 0.5f, 0.0f, 1.0f);
+    p.compare.paneA = c.integer("a", 0, 0, kMaxPanes - 1);
+    p.compare.paneB = c.integer("b", 1, 0, kMaxPanes - 1);
+    p.compare.diff = parseChoice(c, "diff", p.compare.diff, kDiffModes);
+    p.compare.diffMax = c.number("diff_max", 0.0f, 0.0f, 1e9f);
+    p.compare.reference = c.integer("reference", -1, -1, kMaxPanes - 1);
+  }
+  return p;
+}
+
+ViewPreset loadPreset(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throwUserError(path + ": cannot open preset file");
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return parsePreset(ss.str(), path, fs::path(path).parent_path().string());
+}
+
+nlohmann::json presetToJson(const ViewPreset& p, const std::string& baseDir) {
+  using nlohmann::json;
+  json j;
+  j["lightlab_preset"] = kFormatVersion;
+  std::string scene = p.scene;
+  if (!scene.empty() && !fs::path(scene).is_absolute()) {
+    const fs::path base = baseDir.empty() ? fs::current_path() : fs::absolute(baseDir);
+    scene = fs::absolute(scene).lexically_normal().lexically_relative(base).string();
+  }
+  j["scene"] = scene;
+  if (p.camera) {
+    j["camera"] = {{"eye", vec3Json(p.camera->eye)},
+                   {"target", vec3Json(p.camera->target)},
+                   {"up", vec3Json(p.camera->up)},
+                   {"fov_y_deg", p.camera->fovYDeg}};
+  }
+  if (p.width > 0) j["width"] = p.width;
+  if (p.height > 0) j["height"] = p.height;
+  j["exposure"] = p.exposure;
+  j["ui_scale"] = p.uiScale;
+  j["pane_count"] = p.paneCount;
+  j["panes"] = json::array();
+  for (int i = 0; i < static_cast<int>(p.panes.size()) && i < kMaxPanes; ++i) {
+    const PaneSetup& pane = p.panes[static_cast<size_t>(i)];
+    json pj{{"technique", pane.technique}, {"accelerator", pane.accelerator}, {"spp", pane.spp}};
+    pj["params"] = pane.techniqueParams;
+    pj["accel_params"] = pane.accelParams;
+    j["panes"].push_back(pj);
+  }
+  j["compare"] = {{"mode", compareModeName(p.compare.mode)},
+                  {"wipe", p.compare.wipe},
+                  {"a", p.compare.paneA},
+                  {"b", p.compare.paneB},
+                  {"diff", p.compare.diff == DiffMode::Absolute ? "absolute" : "relative"},
+                  {"diff_max", p.compare.diffMax},
+                  {"reference", p.compare.reference}};
+  return j;
+}
+
+void savePreset(const ViewPreset& preset, const std::string& path) {
+  std::ofstream out(path);
+  if (!out) throwUserError(path + ": cannot write preset file");
+  out << presetToJson(preset, fs::path(path).parent_path().string()).dump(2) << "\n";
+}
+
+}  // namespace ll::gui

@@ -1,0 +1,63 @@
+// The complete view state of the GUI as a JSON file: scene, camera, render
+// size, panes (technique, accelerator and their parameters) and compare mode.
+// Slides and demos name these files; `lightlab gui --preset FILE` opens one.
+// The format is documented in data/presets/README.md.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "metrics/image_metrics.h"
+#include "scene/camera.h"
+
+namespace ll::gui {
+
+constexpr int kMaxPanes = 4;
+
+struct PaneSetup {
+  std::string technique = "raycast";
+  std::string accelerator = "none";
+  std::map<std::string, std::string> techniqueParams;  // name -> value as written; missing = default
+  std::map<std::string, std::string> accelParams;
+  int spp = 16;  // passes of progressive refinement (samples per pixel)
+};
+
+enum class CompareMode { SideBySide, Wipe, Difference };
+const char* compareModeName(CompareMode mode);  // "side-by-side", "wipe", "difference"
+
+struct CompareSetup {
+  CompareMode mode = CompareMode::SideBySide;
+  float wipe = 0.5f;       // split position for wipe, fraction of the width from the left
+  int paneA = 0, paneB = 1;  // the two panes wipe and difference show (A left / B right; diff of A against B)
+  DiffMode diff = DiffMode::Absolute;
+  float diffMax = 0.0f;    // heatmap scale; 0 = automatic (99th percentile)
+  int reference = -1;      // pane the error figures are measured against; -1 = none
+};
+
+struct ViewPreset {
+  std::string scene;             // scene path; relative paths resolve against the preset's folder
+  std::optional<Camera> camera;  // absent = the scene's own camera
+  int width = 0, height = 0;     // render size in pixels; 0 = the scene camera's
+  int paneCount = 2;             // 1, 2 or 4 panes shown
+  std::vector<PaneSetup> panes;  // kMaxPanes entries after loading (missing ones get defaults)
+  CompareSetup compare;
+  float uiScale = 1.0f;          // multiplies the monitor's content scale
+  float exposure = 0.0f;         // display exposure in stops
+};
+
+// Reads a preset, validating every name and value against the registries
+// (technique, accelerator, parameter ranges). Throws UserError naming
+// file:line:col and the allowed values. Relative scene paths are made
+// relative to the current directory (resolved against the preset's folder).
+ViewPreset loadPreset(const std::string& path);
+ViewPreset parsePreset(const std::string& text, const std::string& file, const std::string& baseDir);
+
+// Writes `preset` as JSON; the scene path is stored relative to the preset's folder.
+void savePreset(const ViewPreset& preset, const std::string& path);
+nlohmann::json presetToJson(const ViewPreset& preset, const std::string& baseDir);
+
+}  // namespace ll::gui

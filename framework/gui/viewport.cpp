@@ -1,0 +1,311 @@
+#include "gui/viewport.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include "core/error.h"
+#include "core/image.h"
+#include "gui/view_camera.h"
+#include "modules/registry.h"
+
+namespace ll::gui {
+
+namespace {
+
+struct Rect {
+  float x, y, w, h;
+  bool contains(ImVec2 p) const { return p.x >= x && p.y >= y && p.x < x + w && p.y < y + h; }
+};
+
+// Cells of the pane grid: 1 = whole area; 2 = side by side (stacked if the area is tall); 4 = 2 x 2.
+Rect cellOf(int index, int count, Rect area) {
+  if (count <= 1) return area;
+  if (count == 2) {
+    if (area.w >= area.h) return {area.x + index * area.w / 2, area.y, area.w / 2, area.h};
+    return {area.x, area.y + index * area.h / 2, area.w, area.h / 2};
+  }
+  return {area.x + (index % 2) * area.w / 2, area.y + (index / 2) * area.h / 2, area.w / 2, area.h / 2};
+}
+
+// The largest rectangle of the image's aspect ratio centred in `cell`, with a margin.
+Rect fitImage(Rect cell, int imageW, int imageH, float margin) {
+  const float w = std::max(cell.w - 2 * margin, 1.0f), h = std::max(cell.h - 2 * margin, 1.0f);
+  const float aspect = static_cast<float>(imageW) / static_cast<float>(std::max(imageH, 1));
+  float fw = w, fh = w / aspect;
+  if (fh > h) {
+    fh = h;
+    fw = h * aspect;
+  }
+  return {std::floor(cell.x + (cell.w - fw) / 2), std::floor(cell.y + (cell.h - fh) / 2), std::floor(fw),
+          std::floor(fh)};
+}
+
+ImU32 srgbColor(Rgb linear) {
+  const auto c = [](float v) { return static_cast<int>(std::lround(linearToSrgb(std::clamp(v, 0.0f, 1.0f)) * 255)); };
+  return IM_COL32(c(linear.r), c(linear.g), c(linear.b), 255);
+}
+
+// Text lines in a dark box at (x, y); returns the box height.
+float captionBox(ImDrawList* dl, float x, float y, const std::vector<std::string>& lines, ImU32 bg,
+                 float maxWidth) {
+  const float pad = 4.0f * ImGui::GetIO().FontGlobalScale;
+  const float lineH = ImGui::GetTextLineHeight();
+  float width = 0.0f;
+  for (const std::string& l : lines) width = std::max(width, ImGui::CalcTextSize(l.c_str()).x);
+  width = std::min(width + 2 * pad, maxWidth);
+  const float height = lineH * static_cast<float>(lines.size()) + 2 * pad;
+  dl->AddRectFilled(ImVec2(x, y), ImVec2(x + width, y + height), bg, 3.0f);
+  dl->PushClipRect(ImVec2(x, y), ImVec2(x + width, y + height), true);
+  for (size_t i = 0; i < lines.size(); ++i)
+    dl->AddText(ImVec2(x + pad, y + pad + lineH * static_cast<float>(i)), IM_COL32_WHITE, lines[i].c_str());
+  dl->PopClipRect();
+  return height;
+}
+
+std::string formatRate(double raysPerSecond) {
+  char buf[64];
+  if (raysPerSecond >= 1e6)
+    std::snprintf(buf, sizeof buf, "%.2f Mrays/s", raysPerSecond / 1e6);
+  else
+    std::snprintf(buf, sizeof buf, "%.0f krays/s", raysPerSecond / 1e3);
+  return buf;
+}
+
+std::vector<std::string> paneCaption(const AppState& app, int index) {
+  const PaneState& p = app.panes[static_cast<size_t>(index)];
+  const PaneSnapshot& s = p.shown;
+  std::vector<std::string> lines;
+  lines.push_back(std::string(1, paneLetter(index)) + "  " + p.technique + "  /  " + p.accelerator);
+  char buf[160];
+  switch (s.phase) {
+    case PaneSnapshot::Phase::Building:
+      lines.emplace_back("building the accelerator...");
+      break;
+    case PaneSnapshot::Phase::Rendering:
+    case PaneSnapshot::Phase::Done: {
+      if (s.preview) {
+        lines.emplace_back("preview (1/4 resolution)");
+        break;
+      }
+      const double rays = static_cast<double>(s.stats.work.totalRays());
+      std::snprintf(buf, sizeof buf, "pass %d/%d  %.2f s  %s%s", s.passes, s.totalPasses, s.seconds,
+                    formatRate(s.seconds > 0 ? rays / s.seconds : 0.0).c_str(),
+                    s.phase == PaneSnapshot::Phase::Done ? "  done" : "");
+      lines.emplace_back(buf);
+      break;
+    }
+    case PaneSnapshot::Phase::Failed:
+      lines.emplace_back("failed (see below)");
+      break;
+    case PaneSnapshot::Phase::Idle:
+      lines.emplace_back("waiting for the scene...");
+      break;
+  }
+  if (p.hasError) {
+    std::snprintf(buf, sizeof buf, "vs %c: RMSE %.4g  SSIM %.4f", paneLetter(app.compare.reference), p.error.rmse,
+                  p.error.ssim);
+    lines.emplace_back(buf);
+  }
+  if (app.scene) {
+    const EffectSet missed = app.scene->effects.minus(findTechnique(p.technique).simulates);
+    if (!missed.empty()) lines.push_back("misses: " + joinNames(missed.names()));
+  }
+  return lines;
+}
+
+// Banners at the bottom of a pane: a missing student task, a render error.
+void paneBanners(ImDrawList* dl, const PaneState& p, Rect r) {
+  std::vector<std::string> lines;
+  for (const auto& [id, what] : p.shown.missingTasks)
+    lines.push_back("Task " + id + " not implemented: " + what + " (striped pixels use the stub)");
+  if (!lines.empty()) {
+    const float h = ImGui::GetTextLineHeight() * static_cast<float>(lines.size()) + 8.0f;
+    captionBox(dl, r.x, r.y + r.h - h, lines, IM_COL32(150, 20, 120, 230), r.w);
+  }
+  if (p.shown.phase == PaneSnapshot::Phase::Failed) {
+    const float h = ImGui::GetTextLineHeight() + 8.0f;
+    captionBox(dl, r.x, r.y + r.h / 2 - h / 2, {"Error: " + p.shown.error}, IM_COL32(170, 30, 30, 240), r.w);
+  }
+}
+
+void uploadIfChanged(PaneState& p, float exposure) {
+  if (!p.shown.image) return;
+  if (p.texture.valid() && p.uploadedVersion == p.shown.version && p.uploadedExposure == exposure) return;
+  p.texture.upload(*p.shown.image, exposure);
+  p.uploadedVersion = p.shown.version;
+  p.uploadedExposure = exposure;
+}
+
+void drawLegend(ImDrawList* dl, Rect r, const DiffState& diff) {
+  const float barH = 14.0f * ImGui::GetIO().FontGlobalScale;
+  const int segments = 64;
+  for (int i = 0; i < segments; ++i) {
+    const float t0 = static_cast<float>(i) / segments, t1 = static_cast<float>(i + 1) / segments;
+    const ImU32 c0 = srgbColor(errorColormap(t0)), c1 = srgbColor(errorColormap(t1));
+    dl->AddRectFilledMultiColor(ImVec2(r.x + r.w * t0, r.y), ImVec2(r.x + r.w * t1, r.y + barH), c0, c1, c1, c0);
+  }
+  char buf[64];
+  const float ty = r.y + barH + 2.0f;
+  dl->AddText(ImVec2(r.x, ty), IM_COL32_WHITE, "0");
+  std::snprintf(buf, sizeof buf, "%.3g", static_cast<double>(diff.usedMax) / 2);
+  dl->AddText(ImVec2(r.x + r.w / 2 - ImGui::CalcTextSize(buf).x / 2, ty), IM_COL32_WHITE, buf);
+  std::snprintf(buf, sizeof buf, "%.3g%s", static_cast<double>(diff.usedMax), diff.requestedMax <= 0 ? " (auto, 99th pct)" : "");
+  dl->AddText(ImVec2(r.x + r.w - ImGui::CalcTextSize(buf).x, ty), IM_COL32_WHITE, buf);
+}
+
+void updateDiff(AppState& app) {
+  DiffState& d = app.diff;
+  const int a = app.compare.paneA, b = app.compare.paneB;
+  const PaneSnapshot& sa = app.panes[static_cast<size_t>(a)].shown;
+  const PaneSnapshot& sb = app.panes[static_cast<size_t>(b)].shown;
+  if (!sa.image || !sb.image || sa.image->width() != sb.image->width() ||
+      sa.image->height() != sb.image->height()) {
+    d.valid = false;
+    return;
+  }
+  if (d.valid && d.panes[0] == a && d.panes[1] == b && d.versions[0] == sa.version && d.versions[1] == sb.version &&
+      d.mode == app.compare.diff && d.requestedMax == app.compare.diffMax)
+    return;
+  const Image heat = differenceHeatmap(*sa.image, *sb.image, app.compare.diff, app.compare.diffMax, &d.usedMax);
+  d.texture.upload(heat, 0.0f);
+  d.panes[0] = a;
+  d.panes[1] = b;
+  d.versions[0] = sa.version;
+  d.versions[1] = sb.version;
+  d.mode = app.compare.diff;
+  d.requestedMax = app.compare.diffMax;
+  d.valid = true;
+}
+
+Rect compareArea(const AppState& app, Rect area) {
+  const PaneState& a = app.panes[static_cast<size_t>(app.compare.paneA)];
+  const int w = a.texture.valid() ? a.texture.width() : 1, h = a.texture.valid() ? a.texture.height() : 1;
+  const float legend = app.compare.mode == CompareMode::Difference ? 40.0f * ImGui::GetIO().FontGlobalScale : 0.0f;
+  return fitImage({area.x, area.y, area.w, area.h - legend}, w, h, 8.0f);
+}
+
+}  // namespace
+
+void drawViewport(AppState& app, float x, float y, float w, float h) {
+  ImDrawList* dl = ImGui::GetBackgroundDrawList();
+  const Rect area{x, y, w, h};
+  dl->AddRectFilled(ImVec2(x, y), ImVec2(x + w, y + h), IM_COL32(28, 28, 32, 255));
+  for (auto& r : app.paneRects) r = {0, 0, 0, 0};
+  app.compareRect = {0, 0, 0, 0};
+  for (int i = 0; i < kMaxPanes; ++i) uploadIfChanged(app.panes[static_cast<size_t>(i)], app.exposure);
+
+  if (app.compare.mode == CompareMode::SideBySide) {
+    for (int i = 0; i < app.paneCount; ++i) {
+      PaneState& p = app.panes[static_cast<size_t>(i)];
+      const Rect cell = cellOf(i, app.paneCount, area);
+      const Rect r = p.texture.valid() ? fitImage(cell, p.texture.width(), p.texture.height(), 6.0f)
+                                       : fitImage(cell, 1, 1, 6.0f);
+      if (p.texture.valid()) dl->AddImage(p.texture.imguiId(), ImVec2(r.x, r.y), ImVec2(r.x + r.w, r.y + r.h));
+      app.paneRects[static_cast<size_t>(i)] = {r.x, r.y, r.w, r.h};
+      captionBox(dl, r.x, r.y, paneCaption(app, i), IM_COL32(0, 0, 0, 170), r.w);
+      paneBanners(dl, p, r);
+    }
+    return;
+  }
+
+  const int ia = app.compare.paneA, ib = app.compare.paneB;
+  PaneState& a = app.panes[static_cast<size_t>(ia)];
+  PaneState& b = app.panes[static_cast<size_t>(ib)];
+  const Rect r = compareArea(app, area);
+  app.compareRect = {r.x, r.y, r.w, r.h};
+  if (app.compare.mode == CompareMode::Wipe) {
+    const float split = std::clamp(app.compare.wipe, 0.0f, 1.0f);
+    const float sx = r.x + r.w * split;
+    if (a.texture.valid())
+      dl->AddImage(a.texture.imguiId(), ImVec2(r.x, r.y), ImVec2(sx, r.y + r.h), ImVec2(0, 0), ImVec2(split, 1));
+    if (b.texture.valid())
+      dl->AddImage(b.texture.imguiId(), ImVec2(sx, r.y), ImVec2(r.x + r.w, r.y + r.h), ImVec2(split, 0),
+                   ImVec2(1, 1));
+    dl->AddLine(ImVec2(sx, r.y), ImVec2(sx, r.y + r.h), IM_COL32(255, 255, 255, 230), 2.0f);
+    dl->AddCircleFilled(ImVec2(sx, r.y + r.h / 2), 7.0f * ImGui::GetIO().FontGlobalScale, IM_COL32_WHITE);
+    app.paneRects[static_cast<size_t>(ia)] = {r.x, r.y, sx - r.x, r.h};
+    app.paneRects[static_cast<size_t>(ib)] = {sx, r.y, r.x + r.w - sx, r.h};
+    captionBox(dl, r.x, r.y, paneCaption(app, ia), IM_COL32(0, 0, 0, 170), r.w / 2);
+    const auto lines = paneCaption(app, ib);
+    float bw = 0;
+    for (const auto& l : lines) bw = std::max(bw, ImGui::CalcTextSize(l.c_str()).x + 8.0f);
+    bw = std::min(bw, r.w / 2);
+    captionBox(dl, r.x + r.w - bw, r.y, lines, IM_COL32(0, 0, 0, 170), bw);
+    paneBanners(dl, a, {r.x, r.y, r.w / 2, r.h});
+    paneBanners(dl, b, {r.x + r.w / 2, r.y, r.w / 2, r.h});
+    return;
+  }
+
+  // Difference heatmap of A against B, with its legend below.
+  updateDiff(app);
+  if (app.diff.valid) {
+    dl->AddImage(app.diff.texture.imguiId(), ImVec2(r.x, r.y), ImVec2(r.x + r.w, r.y + r.h));
+    drawLegend(dl, {r.x, r.y + r.h + 6.0f, r.w, 30.0f}, app.diff);
+  }
+  char title[200];
+  std::snprintf(title, sizeof title, "%s error of %c (%s) against %c (%s)",
+                app.compare.diff == DiffMode::Absolute ? "absolute" : "relative", paneLetter(ia),
+                a.technique.c_str(), paneLetter(ib), b.technique.c_str());
+  std::vector<std::string> lines{title};
+  if (!app.diff.valid) lines.emplace_back("waiting for both images at full resolution...");
+  captionBox(dl, r.x, r.y, lines, IM_COL32(0, 0, 0, 170), r.w);
+}
+
+void handleCameraInput(AppState& app, GLFWwindow* window, float x, float y, float w, float h) {
+  ImGuiIO& io = ImGui::GetIO();
+  const Rect area{x, y, w, h};
+  static bool dragging = false;  // a drag that started over the image area
+  const bool anyDown = ImGui::IsMouseDown(0) || ImGui::IsMouseDown(1) || ImGui::IsMouseDown(2);
+  if (!anyDown) {
+    dragging = false;
+    app.draggingWipe = false;
+  }
+  if (!io.WantCaptureMouse) {
+    const bool clicked = ImGui::IsMouseClicked(0) || ImGui::IsMouseClicked(1) || ImGui::IsMouseClicked(2);
+    if (clicked && area.contains(io.MousePos)) {
+      dragging = true;
+      if (app.compare.mode == CompareMode::Wipe && ImGui::IsMouseClicked(0)) {
+        const auto& cr = app.compareRect;
+        const float sx = cr[0] + cr[2] * app.compare.wipe;
+        app.draggingWipe = cr[2] > 0 && std::abs(io.MousePos.x - sx) < 10.0f * io.FontGlobalScale;
+      }
+    }
+    const float cellH = std::max(app.paneCount == 4 ? h / 2 : h, 1.0f);
+    if (dragging && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) {
+      if (app.draggingWipe) {
+        const auto& cr = app.compareRect;
+        if (cr[2] > 0) app.compare.wipe = std::clamp((io.MousePos.x - cr[0]) / cr[2], 0.0f, 1.0f);
+      } else if (ImGui::IsMouseDown(0)) {
+        orbit(app.camera, io.MouseDelta.x * 0.005f, io.MouseDelta.y * 0.005f);
+        app.cameraChanged = true;
+      } else {
+        pan(app.camera, -io.MouseDelta.x / cellH, io.MouseDelta.y / cellH);
+        app.cameraChanged = true;
+      }
+    }
+    if (io.MouseWheel != 0.0f && area.contains(io.MousePos)) {
+      zoom(app.camera, std::pow(0.85f, io.MouseWheel));
+      app.cameraChanged = true;
+    }
+  }
+  if (!io.WantCaptureKeyboard && app.scene) {
+    Vec3 move(0.0f);
+    const auto key = [&](int k) { return glfwGetKey(window, k) == GLFW_PRESS ? 1.0f : 0.0f; };
+    move.x = key(GLFW_KEY_D) - key(GLFW_KEY_A);
+    move.y = key(GLFW_KEY_E) - key(GLFW_KEY_Q);
+    move.z = key(GLFW_KEY_W) - key(GLFW_KEY_S);
+    if (move != Vec3(0.0f)) {
+      const float speed = 0.25f * app.scene->geometry.sceneBounds().diagonal() *
+                          (key(GLFW_KEY_LEFT_SHIFT) + key(GLFW_KEY_RIGHT_SHIFT) > 0 ? 4.0f : 1.0f);
+      fly(app.camera, move * speed * io.DeltaTime);
+      app.cameraChanged = true;
+    }
+  }
+}
+
+}  // namespace ll::gui

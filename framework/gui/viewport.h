@@ -1,0 +1,24 @@
+// The image area right of the side panel: the panes' images laid out 1, 2 or
+// 4 at a time, or one compare view (wipe or difference heatmap), with a
+// caption and banners over each image; and the camera controls, which act
+// only when ImGui does not want the mouse or keyboard.
+#pragma once
+
+#include "gui/app_state.h"
+
+struct GLFWwindow;
+
+namespace ll::gui {
+
+// Uploads changed images, then draws into ImGui's background draw list over
+// the rectangle (x, y, w, h) in window coordinates. Call between NewFrame and Render.
+void drawViewport(AppState& app, float x, float y, float w, float h);
+
+// Mouse: left drag orbits, right or middle drag pans, wheel zooms; in wipe
+// mode dragging near the split line moves it. Keys: WASD/QE fly (Shift x4).
+void handleCameraInput(AppState& app, GLFWwindow* window, float x, float y, float w, float h);
+
+// One-letter pane names used everywhere in the GUI: A, B, C, D.
+inline char paneLetter(int pane) { return static_cast<char>('A' + pane); }
+
+}  // namespace ll::gui
