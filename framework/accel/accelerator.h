@@ -30,6 +30,7 @@ struct AcceleratorStats {
   size_t memoryBytes = 0;  // of the structure itself, not the geometry
   size_t nodeCount = 0;
   int depth = 0;
+  double sahCost = 0.0;  // expected cost per ray under the surface area heuristic (0 = not reported)
 };
 
 class Accelerator {

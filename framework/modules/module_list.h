@@ -3,8 +3,16 @@
 // nameAccelerator()`) plus one line here. Order = order shown to users.
 #pragma once
 
+#ifdef LIGHTLAB_HAVE_EMBREE
+#define LIGHTLAB_EMBREE_ACCELERATOR(X) X(embreeAccelerator)
+#else
+#define LIGHTLAB_EMBREE_ACCELERATOR(X)
+#endif
+
 #define LIGHTLAB_ACCELERATORS(X) \
-  X(bruteForceAccelerator)
+  X(bruteForceAccelerator)       \
+  X(bvhAccelerator)              \
+  LIGHTLAB_EMBREE_ACCELERATOR(X)
 
 #define LIGHTLAB_TECHNIQUES(X) \
   X(raycastTechnique)

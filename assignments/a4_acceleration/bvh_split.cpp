@@ -1,0 +1,139 @@
+// A4.1 BVH build: choosing where a node splits.
+#include <algorithm>
+#include <array>
+
+#include "a4_tasks.h"
+#include "render/student_task.h"
+
+namespace ll::a4 {
+
+#if LIGHTLAB_SOLUTION  // A4.1 (helpers)
+namespace {
+
+Bounds3 centroidBounds(std::span<const BuildPrim> prims) {
+  Bounds3 b;
+  for (const BuildPrim& p : prims) b.extend(p.centroid);
+  return b;
+}
+
+int widestAxis(const Bounds3& b) {
+  const Vec3 e = b.extent();
+  return e.x > e.y ? (e.x > e.z ? 0 : 2) : (e.y > e.z ? 1 : 2);
+}
+
+// Half the surface area of a box (the SAH only needs ratios).
+float halfArea(const Bounds3& b) {
+  const Vec3 e = b.extent();
+  return e.x * e.y + e.y * e.z + e.z * e.x;
+}
+
+// Object median: the lower half of the centroids along `axis` goes left.
+size_t equalCounts(std::span<BuildPrim> prims, int axis) {
+  const size_t k = prims.size() / 2;
+  std::nth_element(prims.begin(), prims.begin() + static_cast<std::ptrdiff_t>(k), prims.end(),
+                   [axis](const BuildPrim& a, const BuildPrim& b) { return a.centroid[axis] < b.centroid[axis]; });
+  return k;
+}
+
+// Spatial median: centroids below the midpoint of the centroids' box go left.
+size_t spatialMedian(std::span<BuildPrim> prims, const Bounds3& cb, int axis) {
+  const float mid = cb.center()[axis];
+  const auto it = std::partition(prims.begin(), prims.end(),
+                                 [axis, mid](const BuildPrim& p) { return p.centroid[axis] < mid; });
+  const auto k = static_cast<size_t>(it - prims.begin());
+  return (k == 0 || k == prims.size()) ? equalCounts(prims, axis) : k;  // rounding put everything on one side
+}
+
+constexpr int kMaxBins = 64;
+
+// Binned SAH (Wald, "On fast Construction of SAH-based Bounding Volume
+// Hierarchies", 2007) over all three axes.
+size_t sahSplit(std::span<BuildPrim> prims, const Bounds3& bounds, const Bounds3& cb, const SplitSettings& s) {
+  const size_t n = prims.size();
+  const int bins = std::clamp(s.bins, 2, kMaxBins);
+  const float nodeArea = halfArea(bounds);
+  if (!(nodeArea > 0.0f)) return n <= static_cast<size_t>(s.maxLeaf) ? 0 : equalCounts(prims, widestAxis(cb));
+
+  float bestCost = kInfinity;
+  int bestAxis = -1, bestBoundary = 0;  // left = bins [0, bestBoundary)
+  for (int axis = 0; axis < 3; ++axis) {
+    const float lo = cb.min[axis], extent = cb.max[axis] - lo;
+    if (!(extent > 0.0f)) continue;
+    const float scale = static_cast<float>(bins) / extent;
+    std::array<Bounds3, kMaxBins> binBounds{};
+    std::array<size_t, kMaxBins> binCount{};
+    for (const BuildPrim& p : prims) {
+      const int b = std::min(bins - 1, static_cast<int>((p.centroid[axis] - lo) * scale));
+      binBounds[static_cast<size_t>(b)].extend(p.bounds);
+      ++binCount[static_cast<size_t>(b)];
+    }
+    // Sweep from the right: area and count of bins [i, bins).
+    std::array<float, kMaxBins> rightArea{};
+    std::array<size_t, kMaxBins> rightCount{};
+    Bounds3 acc;
+    size_t count = 0;
+    for (int i = bins - 1; i > 0; --i) {
+      acc.extend(binBounds[static_cast<size_t>(i)]);
+      count += binCount[static_cast<size_t>(i)];
+      rightArea[static_cast<size_t>(i)] = halfArea(acc);
+      rightCount[static_cast<size_t>(i)] = count;
+    }
+    acc = Bounds3{};
+    count = 0;
+    for (int i = 1; i < bins; ++i) {
+      acc.extend(binBounds[static_cast<size_t>(i - 1)]);
+      count += binCount[static_cast<size_t>(i - 1)];
+      const size_t nRight = rightCount[static_cast<size_t>(i)];
+      if (count == 0 || nRight == 0) continue;
+      const float cost = s.traversalCost + s.intersectionCost *
+                                               (halfArea(acc) * static_cast<float>(count) +
+                                                rightArea[static_cast<size_t>(i)] * static_cast<float>(nRight)) /
+                                               nodeArea;
+      if (cost < bestCost) {
+        bestCost = cost;
+        bestAxis = axis;
+        bestBoundary = i;
+      }
+    }
+  }
+  const float leafCost = s.intersectionCost * static_cast<float>(n);
+  if (n <= static_cast<size_t>(s.maxLeaf) && leafCost <= bestCost) return 0;
+  if (bestAxis < 0) return equalCounts(prims, widestAxis(cb));
+
+  const float lo = cb.min[bestAxis], scale = static_cast<float>(bins) / (cb.max[bestAxis] - lo);
+  const auto it = std::partition(prims.begin(), prims.end(), [&](const BuildPrim& p) {
+    return std::min(bins - 1, static_cast<int>((p.centroid[bestAxis] - lo) * scale)) < bestBoundary;
+  });
+  return static_cast<size_t>(it - prims.begin());
+}
+
+}  // namespace
+#endif
+
+size_t splitPrimitives(std::span<BuildPrim> prims, const Bounds3& bounds, const SplitSettings& settings) {
+#if LIGHTLAB_SOLUTION  // A4.1
+  const size_t n = prims.size();
+  const bool fitsLeaf = n <= static_cast<size_t>(settings.maxLeaf);
+  const Bounds3 cb = centroidBounds(prims);
+  const int axis = widestAxis(cb);
+  if (!(cb.max[axis] > cb.min[axis]))  // identical centroids: no plane separates them
+    return fitsLeaf ? 0 : n / 2;
+  switch (settings.method) {
+    case SplitMethod::Median:
+      return fitsLeaf ? 0 : spatialMedian(prims, cb, axis);
+    case SplitMethod::EqualCounts:
+      return fitsLeaf ? 0 : equalCounts(prims, axis);
+    case SplitMethod::Sah:
+      return sahSplit(prims, bounds, cb, settings);
+  }
+  return 0;
+#else
+  LIGHTLAB_TODO("A4.1", "BVH build: splitting a node (assignments/a4_acceleration/bvh_split.cpp)");
+  (void)prims;
+  (void)bounds;
+  (void)settings;
+  return 0;  // fallback: the root becomes one leaf holding everything (brute force)
+#endif
+}
+
+}  // namespace ll::a4
