@@ -79,7 +79,7 @@ void pollSceneLoad(AppState& app) {
     app.scene = std::move(scene);
     app.scenePath = path;
     ++app.sceneVersion;
-    if (!(app.loadKeepsCamera && sameFile) || !cameraIsValid(app.camera)) app.camera = app.scene->camera;
+    if (!app.loadKeepsCamera || !cameraIsValid(app.camera)) app.camera = app.scene->camera;
     app.cameraChanged = true;
     for (PaneState& p : app.panes) p.dirty = true;
     addMessage(app, (sameFile ? "reloaded " : "opened ") + path, false);

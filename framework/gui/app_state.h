@@ -94,6 +94,7 @@ struct AppState {
   // origin), for the screenshot sidecar: x, y, w, h per pane; w = 0 if hidden.
   std::array<std::array<float, 4>, kMaxPanes> paneRects{};
   std::array<float, 4> compareRect{};
+  std::vector<std::array<float, 4>> overlayRects;  // captions and banners drawn over the images
 };
 
 }  // namespace ll::gui

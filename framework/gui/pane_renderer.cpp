@@ -53,8 +53,7 @@ PaneSnapshot PaneRenderer::snapshot() const {
 
 bool PaneRenderer::finished() const {
   std::lock_guard lock(mutex_);
-  return !busy_ && !pending_ && snapshot_.phase != PaneSnapshot::Phase::Building &&
-         snapshot_.phase != PaneSnapshot::Phase::Rendering;
+  return !busy_ && !pending_;
 }
 
 void PaneRenderer::publish(const PaneSnapshot& s) {
@@ -84,6 +83,10 @@ void PaneRenderer::workerLoop() {
       s.error = e.what();
       publish(s);
     }
+    std::lock_guard lock(mutex_);
+    const auto phase = snapshot_.phase;
+    if (!pending_ && (phase == PaneSnapshot::Phase::Building || phase == PaneSnapshot::Phase::Rendering))
+      snapshot_.phase = PaneSnapshot::Phase::Stopped;  // cancelled by stop(): the last image stays
   }
 }
 

@@ -32,7 +32,7 @@ struct RenderRequest {
 };
 
 struct PaneSnapshot {
-  enum class Phase { Idle, Building, Rendering, Done, Failed };
+  enum class Phase { Idle, Building, Rendering, Done, Failed, Stopped };
   Phase phase = Phase::Idle;
   uint64_t version = 0;                 // increases with every published image
   std::shared_ptr<const Image> image;   // linear radiance, stub pixels striped magenta

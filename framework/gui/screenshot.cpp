@@ -35,7 +35,7 @@ std::string saveScreenshotSidecar(const AppState& app, const std::string& path, 
   const auto rect = [&](const std::array<float, 4>& r) {
     return json::array({r[0] * pixelScale, r[1] * pixelScale, r[2] * pixelScale, r[3] * pixelScale});
   };
-  static const char* kPhases[] = {"idle", "building", "rendering", "done", "failed"};
+  static const char* kPhases[] = {"idle", "building", "rendering", "done", "failed", "stopped"};
   json j{{"width", width}, {"height", height}, {"scene", app.scenePath}, {"pane_count", app.paneCount}};
   j["panes"] = json::array();
   for (int i = 0; i < kMaxPanes; ++i) {
@@ -58,6 +58,8 @@ std::string saveScreenshotSidecar(const AppState& app, const std::string& path, 
                   {"wipe", app.compare.wipe},
                   {"rect", rect(app.compareRect)},
                   {"diff_max", app.diff.usedMax}};
+  j["overlays"] = json::array();
+  for (const auto& r : app.overlayRects) j["overlays"].push_back(rect(r));
   j["messages"] = json::array();
   for (const Message& m : app.messages) j["messages"].push_back({{"text", m.text}, {"error", m.error}});
   const std::string sidecar = std::filesystem::path(path).replace_extension(".json").string();

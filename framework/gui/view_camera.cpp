@@ -24,7 +24,7 @@ void orbit(Camera& camera, float yaw, float pitch) {
   const float margin = glm::radians(1.0f);
   const float newAngle = std::clamp(angleToUp - pitch, margin, kPi - margin);
   const Vec3 right = rotate(frame.u, up, -yaw);
-  offset = rotate(offset, right, angleToUp - newAngle);
+  offset = rotate(offset, right, newAngle - angleToUp);
   camera.eye = camera.target + offset;
 }
 

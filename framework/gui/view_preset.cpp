@@ -159,9 +159,10 @@ nlohmann::json presetToJson(const ViewPreset& p, const std::string& baseDir) {
   json j;
   j["lightlab_preset"] = kFormatVersion;
   std::string scene = p.scene;
-  if (!scene.empty() && !fs::path(scene).is_absolute()) {
-    const fs::path base = baseDir.empty() ? fs::current_path() : fs::absolute(baseDir);
-    scene = fs::absolute(scene).lexically_normal().lexically_relative(base).string();
+  if (!scene.empty()) {  // relative to the preset's folder, so presets move with the tree
+    const fs::path base = fs::absolute(baseDir.empty() ? fs::current_path() : fs::path(baseDir)).lexically_normal();
+    const fs::path relative = fs::absolute(scene).lexically_normal().lexically_relative(base);
+    if (!relative.empty()) scene = relative.string();
   }
   j["scene"] = scene;
   if (p.camera) {

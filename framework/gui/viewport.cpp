@@ -1,6 +1,7 @@
 #include "gui/viewport.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -51,6 +52,9 @@ ImU32 srgbColor(Rgb linear) {
 }
 
 // Text lines in a dark box at (x, y); returns the box height.
+// Every box drawn over an image is recorded here (reset each frame) for the screenshot sidecar.
+std::vector<std::array<float, 4>>* gOverlays = nullptr;
+
 float captionBox(ImDrawList* dl, float x, float y, const std::vector<std::string>& lines, ImU32 bg,
                  float maxWidth) {
   const float pad = 4.0f * ImGui::GetIO().FontGlobalScale;
@@ -60,6 +64,7 @@ float captionBox(ImDrawList* dl, float x, float y, const std::vector<std::string
   width = std::min(width + 2 * pad, maxWidth);
   const float height = lineH * static_cast<float>(lines.size()) + 2 * pad;
   dl->AddRectFilled(ImVec2(x, y), ImVec2(x + width, y + height), bg, 3.0f);
+  if (gOverlays) gOverlays->push_back({x, y, width, height});
   dl->PushClipRect(ImVec2(x, y), ImVec2(x + width, y + height), true);
   for (size_t i = 0; i < lines.size(); ++i)
     dl->AddText(ImVec2(x + pad, y + pad + lineH * static_cast<float>(i)), IM_COL32_WHITE, lines[i].c_str());
@@ -101,6 +106,9 @@ std::vector<std::string> paneCaption(const AppState& app, int index) {
     }
     case PaneSnapshot::Phase::Failed:
       lines.emplace_back("failed (see below)");
+      break;
+    case PaneSnapshot::Phase::Stopped:
+      lines.emplace_back("stopped");
       break;
     case PaneSnapshot::Phase::Idle:
       lines.emplace_back("waiting for the scene...");
@@ -196,6 +204,8 @@ void drawViewport(AppState& app, float x, float y, float w, float h) {
   const Rect area{x, y, w, h};
   dl->AddRectFilled(ImVec2(x, y), ImVec2(x + w, y + h), IM_COL32(28, 28, 32, 255));
   for (auto& r : app.paneRects) r = {0, 0, 0, 0};
+  app.overlayRects.clear();
+  gOverlays = &app.overlayRects;
   app.compareRect = {0, 0, 0, 0};
   for (int i = 0; i < kMaxPanes; ++i) uploadIfChanged(app.panes[static_cast<size_t>(i)], app.exposure);
 
@@ -227,7 +237,9 @@ void drawViewport(AppState& app, float x, float y, float w, float h) {
       dl->AddImage(b.texture.imguiId(), ImVec2(sx, r.y), ImVec2(r.x + r.w, r.y + r.h), ImVec2(split, 0),
                    ImVec2(1, 1));
     dl->AddLine(ImVec2(sx, r.y), ImVec2(sx, r.y + r.h), IM_COL32(255, 255, 255, 230), 2.0f);
-    dl->AddCircleFilled(ImVec2(sx, r.y + r.h / 2), 7.0f * ImGui::GetIO().FontGlobalScale, IM_COL32_WHITE);
+    const float handle = 7.0f * ImGui::GetIO().FontGlobalScale;
+    dl->AddCircleFilled(ImVec2(sx, r.y + r.h / 2), handle, IM_COL32_WHITE);
+    app.overlayRects.push_back({sx - handle - 1, r.y, 2 * handle + 2, r.h});
     app.paneRects[static_cast<size_t>(ia)] = {r.x, r.y, sx - r.x, r.h};
     app.paneRects[static_cast<size_t>(ib)] = {sx, r.y, r.x + r.w - sx, r.h};
     captionBox(dl, r.x, r.y, paneCaption(app, ia), IM_COL32(0, 0, 0, 170), r.w / 2);

@@ -1,0 +1,180 @@
+// The GUI's actions without a window: a broken scene or preset leaves the
+// previous state usable with a message, a file change reloads, switching
+// technique keeps shared parameters, and panes restart on any change.
+#include "gui/app_actions.h"
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+#include <gtest/gtest.h>
+
+#include "test_support.h"
+
+namespace ll::gui {
+namespace {
+
+namespace fs = std::filesystem;
+using testing_support::contains;
+
+const std::string kScenes = std::string(LIGHTLAB_DATA_DIR) + "/scenes/";
+
+void waitPanes(AppState& app) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (std::chrono::steady_clock::now() < deadline) {
+    submitPanes(app);
+    refreshPanes(app);
+    if (allPanesFinished(app)) return;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  FAIL() << "panes did not finish";
+}
+
+// Tiny renders (32 x 24, one pass) so the tests stay fast.
+void makeSmall(AppState& app) {
+  initPanes(app);
+  app.width = 32;
+  app.height = 24;
+  for (PaneState& p : app.panes) p.spp = 1;
+}
+
+TEST(AppActions, ABrokenSceneKeepsThePreviousOneAndSaysWhere) {
+  AppState app;
+  makeSmall(app);
+  openScene(app, kScenes + "cornell_box.json");
+  waitForSceneLoad(app);
+  ASSERT_TRUE(app.scene);
+  const uint64_t version = app.sceneVersion;
+  const auto* before = app.scene.get();
+
+  openScene(app, kScenes + "tests/bad/malformed_json.json");
+  waitForSceneLoad(app);
+  EXPECT_EQ(app.scene.get(), before);
+  EXPECT_EQ(app.sceneVersion, version);
+  EXPECT_EQ(app.scenePath, kScenes + "cornell_box.json");
+  ASSERT_FALSE(app.messages.empty());
+  EXPECT_TRUE(app.messages.back().error);
+  EXPECT_TRUE(contains(app.messages.back().text, "malformed_json.json:")) << app.messages.back().text;
+
+  openScene(app, "/nonexistent.json");
+  waitForSceneLoad(app);
+  EXPECT_EQ(app.scene.get(), before);
+  EXPECT_TRUE(contains(app.messages.back().text, "/nonexistent.json")) << app.messages.back().text;
+
+  waitPanes(app);  // and it still renders
+  EXPECT_EQ(app.panes[0].shown.phase, PaneSnapshot::Phase::Done);
+}
+
+TEST(AppActions, ChangingTheSceneFileOnDiskReloadsItKeepingTheView) {
+  const fs::path dir = fs::temp_directory_path() / "lightlab_reload_test";
+  fs::create_directories(dir);
+  const fs::path file = dir / "scene.json";
+  fs::copy_file(kScenes + "tests/sphere_point_light.json", file, fs::copy_options::overwrite_existing);
+  AppState app;
+  makeSmall(app);
+  openScene(app, file.string());
+  waitForSceneLoad(app);
+  ASSERT_TRUE(app.scene);
+  const uint64_t version = app.sceneVersion;
+  app.camera.eye += Vec3(0.1f, 0, 0);  // the user moved the view
+
+  fs::last_write_time(file, fs::last_write_time(file) + std::chrono::seconds(2));
+  std::this_thread::sleep_for(std::chrono::milliseconds(600));  // the watch looks twice a second
+  watchSceneFile(app);
+  waitForSceneLoad(app);
+  EXPECT_EQ(app.sceneVersion, version + 1);
+  EXPECT_NE(app.camera.eye, app.scene->camera.eye);  // a reload keeps the view
+
+  // A broken save is reported once, not reloaded in a loop, and the scene stays.
+  std::ofstream(file) << "{ \"camera\": ";
+  fs::last_write_time(file, fs::last_write_time(file) + std::chrono::seconds(4));
+  std::this_thread::sleep_for(std::chrono::milliseconds(600));
+  watchSceneFile(app);
+  waitForSceneLoad(app);
+  EXPECT_EQ(app.sceneVersion, version + 1);
+  EXPECT_TRUE(app.messages.back().error);
+  const size_t messages = app.messages.size();
+  std::this_thread::sleep_for(std::chrono::milliseconds(600));
+  watchSceneFile(app);
+  waitForSceneLoad(app);
+  EXPECT_EQ(app.messages.size(), messages);
+  fs::remove_all(dir);
+}
+
+TEST(AppActions, SwitchingTechniqueOrAcceleratorKeepsSharedParameters) {
+  AppState app;
+  makeSmall(app);
+  app.panes[0].techniqueParams.set("light_samples", "5");
+  app.panes[0].dirty = false;
+  setTechnique(app, 0, "raycast");
+  EXPECT_EQ(app.panes[0].techniqueParams.getInt("light_samples"), 5);
+  EXPECT_TRUE(app.panes[0].dirty);
+  setTechnique(app, 0, "no-such");
+  EXPECT_TRUE(contains(app.messages.back().text, "no-such"));
+  EXPECT_EQ(app.panes[0].technique, "raycast");
+  setAccelerator(app, 1, "none");
+  EXPECT_EQ(app.panes[1].accelerator, "none");
+}
+
+TEST(AppActions, PresetAppliesAndABadPresetChangesNothing) {
+  const fs::path dir = fs::temp_directory_path() / "lightlab_app_preset_test";
+  fs::create_directories(dir);
+  AppState app;
+  makeSmall(app);
+  openScene(app, kScenes + "cornell_box.json");
+  waitForSceneLoad(app);
+  app.paneCount = 4;
+  app.compare.mode = CompareMode::Wipe;
+  app.compare.wipe = 0.25f;
+  app.panes[2].techniqueParams.set("light_samples", "9");
+  app.camera.eye = Vec3(100, 200, -700);
+  const std::string file = (dir / "v.json").string();
+  ASSERT_TRUE(savePresetFile(app, file));
+
+  AppState other;
+  makeSmall(other);
+  ASSERT_TRUE(loadPresetFile(other, file));
+  waitForSceneLoad(other);
+  EXPECT_EQ(fs::path(other.scenePath).lexically_normal(), fs::path(app.scenePath).lexically_normal());
+  EXPECT_EQ(other.camera.eye, app.camera.eye);  // the preset's camera, not the scene's
+  EXPECT_EQ(other.paneCount, 4);
+  EXPECT_EQ(other.compare.mode, CompareMode::Wipe);
+  EXPECT_EQ(other.compare.wipe, 0.25f);
+  EXPECT_EQ(other.panes[2].techniqueParams.getInt("light_samples"), 9);
+
+  std::ofstream(dir / "bad.json") << R"({"lightlab_preset": 1, "scene": "x.json", "panes": [{"technique": "zzz"}]})";
+  EXPECT_FALSE(loadPresetFile(other, (dir / "bad.json").string()));
+  EXPECT_TRUE(contains(other.messages.back().text, "bad.json:1:")) << other.messages.back().text;
+  EXPECT_EQ(other.paneCount, 4);
+  EXPECT_EQ(other.compare.mode, CompareMode::Wipe);
+  fs::remove_all(dir);
+}
+
+TEST(AppActions, ACameraChangeRestartsEveryActivePaneAndErrorsFollowTheReference) {
+  AppState app;
+  makeSmall(app);
+  openScene(app, kScenes + "cornell_box.json");
+  waitForSceneLoad(app);
+  app.compare.reference = 0;
+  app.panes[1].techniqueParams.set("light_samples", "1");
+  waitPanes(app);
+  ASSERT_TRUE(app.panes[1].hasError);
+  EXPECT_GT(app.panes[1].error.rmse, 0.0);  // 1 light sample against 16: noisier shadows
+  const auto before = *app.panes[0].shown.image;
+  app.camera.eye += Vec3(30, 0, 0);
+  app.cameraChanged = true;
+  waitPanes(app);
+  EXPECT_NE(app.panes[0].shown.image->pixels(), before.pixels());
+  EXPECT_FALSE(app.panes[2].shown.image);  // pane C is hidden with two panes: never rendered
+}
+
+TEST(AppActions, SceneListFindsScenesButNotPresetsOrTheSchema) {
+  const auto files = findSceneFiles({kScenes});
+  EXPECT_TRUE(std::any_of(files.begin(), files.end(), [](const std::string& f) { return contains(f, "cornell_box.json"); }));
+  EXPECT_TRUE(std::none_of(files.begin(), files.end(), [](const std::string& f) { return contains(f, "schema"); }));
+}
+
+}  // namespace
+}  // namespace ll::gui

@@ -1,0 +1,118 @@
+// PaneRenderer: renders off the calling thread, publishes pass by pass,
+// restarts on a new request, and its result is exactly the headless render.
+#include "gui/pane_renderer.h"
+
+#include <chrono>
+#include <thread>
+
+#include <gtest/gtest.h>
+
+#include "modules/registry.h"
+#include "render/render_job.h"
+#include "scene/scene_loader.h"
+
+namespace ll::gui {
+namespace {
+
+const std::string kScenes = std::string(LIGHTLAB_DATA_DIR) + "/scenes/";
+
+RenderRequest request(const std::shared_ptr<const Scene>& scene, int lightSamples, int spp) {
+  RenderRequest r;
+  r.scene = scene;
+  r.sceneVersion = 1;
+  r.technique = "raycast";
+  r.accelerator = "none";
+  const TechniqueInfo& t = findTechnique("raycast");
+  r.techniqueParams = ParamSet("technique 'raycast'", t.params);
+  r.techniqueParams.set("light_samples", std::to_string(lightSamples));
+  r.accelParams = ParamSet("accelerator 'none'", findAccelerator("none").params);
+  r.settings.width = 48;
+  r.settings.height = 40;
+  r.settings.spp = spp;
+  r.settings.seed = 3;
+  return r;
+}
+
+Image headless(const RenderRequest& r) {
+  const auto accel = buildAccelerator(findAccelerator(r.accelerator), r.accelParams, r.scene->geometry);
+  const auto technique = findTechnique(r.technique).make();
+  RenderJob job(*r.scene, *accel, *technique, r.techniqueParams, r.settings);
+  job.run();
+  return job.frame().resolve();
+}
+
+void waitFinished(const PaneRenderer& pane) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (!pane.finished() && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  ASSERT_TRUE(pane.finished());
+}
+
+TEST(PaneRenderer, FinalImageIsExactlyTheHeadlessRender) {
+  const auto scene = std::make_shared<const Scene>(loadScene(kScenes + "cornell_box.json"));
+  PaneRenderer pane;
+  const RenderRequest r = request(scene, 4, 3);
+  pane.submit(r);
+  waitFinished(pane);
+  const PaneSnapshot s = pane.snapshot();
+  EXPECT_EQ(s.phase, PaneSnapshot::Phase::Done);
+  EXPECT_EQ(s.passes, 3);
+  EXPECT_EQ(s.totalPasses, 3);
+  EXPECT_GT(s.stats.work.totalRays(), 0u);
+  ASSERT_TRUE(s.image);
+  EXPECT_EQ(s.image->pixels(), headless(r).pixels());
+}
+
+TEST(PaneRenderer, ANewRequestReplacesTheRunningOne) {
+  const auto scene = std::make_shared<const Scene>(loadScene(kScenes + "cornell_box.json"));
+  PaneRenderer pane;
+  pane.submit(request(scene, 64, 50));  // long; replaced at once
+  const RenderRequest last = request(scene, 2, 2);
+  pane.submit(last);
+  waitFinished(pane);
+  const PaneSnapshot s = pane.snapshot();
+  EXPECT_EQ(s.phase, PaneSnapshot::Phase::Done);
+  EXPECT_EQ(s.totalPasses, 2);
+  ASSERT_TRUE(s.image);
+  EXPECT_EQ(s.image->pixels(), headless(last).pixels());
+}
+
+TEST(PaneRenderer, SubmitReturnsWhileRenderingAndImagesArrivePassByPass) {
+  const auto scene = std::make_shared<const Scene>(loadScene(kScenes + "cornell_box.json"));
+  PaneRenderer pane;
+  RenderRequest r = request(scene, 16, 400);
+  r.settings.width = 128;
+  r.settings.height = 128;
+  const auto before = std::chrono::steady_clock::now();
+  pane.submit(r);
+  EXPECT_LT(std::chrono::steady_clock::now() - before, std::chrono::seconds(1));  // no wait for a pass
+  uint64_t firstVersion = 0;
+  for (int i = 0; i < 20000 && firstVersion == 0; ++i) {
+    firstVersion = pane.snapshot().version;
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  ASSERT_GT(firstVersion, 0u);
+  EXPECT_FALSE(pane.finished());
+  pane.stop();
+  waitFinished(pane);
+  EXPECT_LT(pane.snapshot().passes, 400);  // stopped early; the last image stays
+  EXPECT_TRUE(pane.snapshot().image);
+}
+
+TEST(PaneRenderer, AnErrorIsShownNotThrown) {
+  const auto scene = std::make_shared<const Scene>(loadScene(kScenes + "cornell_box.json"));
+  PaneRenderer pane;
+  RenderRequest r = request(scene, 1, 1);
+  r.technique = "no-such-technique";
+  pane.submit(r);
+  waitFinished(pane);
+  const PaneSnapshot s = pane.snapshot();
+  EXPECT_EQ(s.phase, PaneSnapshot::Phase::Failed);
+  EXPECT_NE(s.error.find("no-such-technique"), std::string::npos) << s.error;
+  pane.submit(request(scene, 1, 1));  // and it keeps working
+  waitFinished(pane);
+  EXPECT_EQ(pane.snapshot().phase, PaneSnapshot::Phase::Done);
+}
+
+}  // namespace
+}  // namespace ll::gui

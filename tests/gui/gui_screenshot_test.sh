@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# The GUI end to end under Xvfb (Mesa llvmpipe): open two-pane presets, take
+# screenshots once every pane has finished, and check that each pane shows
+# what a headless render of the same technique shows, that the wipe puts A
+# left and B right of its split, and that the difference view is the heatmap
+# of A against B.
+#   gui_screenshot_test.sh LIGHTLAB CHECKER OUT_DIR
+set -euo pipefail
+LL=$1 CHECK=$2 OUT=$3
+HERE=$(cd "$(dirname "$0")" && pwd)
+ROOT=$(cd "$HERE/../.." && pwd)
+rm -rf "$OUT" && mkdir -p "$OUT"
+cd "$ROOT"
+
+# Headless references: same scene, size, passes and seed as the presets.
+common=(--quiet render data/scenes/cornell_box.json -t raycast -a none --width 160 --height 160 --spp 2)
+"$LL" "${common[@]}" --set light_samples=16 -o "$OUT/a.pfm"
+"$LL" "${common[@]}" --set light_samples=1 -o "$OUT/b.pfm"
+
+shot() {  # preset name -> OUT/name.png (+ .json)
+  xvfb-run -a -s '-screen 0 1280x800x24' "$LL" gui --preset "$HERE/$1.json" --screenshot "$OUT/$1.png" \
+    --frames 3 --timeout 600 >/dev/null
+}
+shot two_panes
+shot wipe
+shot difference
+
+"$CHECK" "$OUT/two_panes.png" pane 0 "$OUT/a.pfm"
+"$CHECK" "$OUT/two_panes.png" pane 1 "$OUT/b.pfm"
+"$CHECK" "$OUT/wipe.png" pane 0 "$OUT/a.pfm" 0 0.3
+"$CHECK" "$OUT/wipe.png" pane 1 "$OUT/b.pfm" 0.3 1
+"$CHECK" "$OUT/difference.png" diff "$OUT/a.pfm" "$OUT/b.pfm"
+"$CHECK" "$OUT/wipe.png" differs "$OUT/two_panes.png"
+"$CHECK" "$OUT/difference.png" differs "$OUT/wipe.png"
+# The checker itself must catch a wrong picture: pane 1 is not the 16-sample render.
+if "$CHECK" "$OUT/two_panes.png" pane 1 "$OUT/a.pfm" >/dev/null; then
+  echo "FAIL: the checker accepted the wrong reference"; exit 1
+fi
+echo "GUI screenshots OK: $OUT"

@@ -1,0 +1,149 @@
+// Checks a `lightlab gui --screenshot` picture against headless renders, using
+// the sidecar JSON the GUI writes next to it (where each pane was drawn, and
+// which boxes were drawn over the images). Exit 0 = pass, 1 = fail, with one
+// line saying why.
+//
+//   screenshot_check SHOT.png pane I REF.pfm [U0 U1]   pane I shows REF (columns U0..U1 of it, for wipe)
+//   screenshot_check SHOT.png diff A.pfm B.pfm          the compare view is the heatmap of A against B
+//   screenshot_check SHOT.png differs OTHER.png         the two pictures differ visibly
+//
+// Metric: the displayed region and the reference are both averaged over a
+// grid of blocks in sRGB [0,1]; every block not touched by an overlay must
+// agree within kBlockTolerance (the display resamples and quantises, so a
+// per-pixel comparison would be unfair). A blank or uniform region fails.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/image.h"
+#include "metrics/image_metrics.h"
+
+namespace {
+
+using ll::Image;
+using ll::Rgb;
+using Rect = std::array<double, 4>;  // x, y, w, h in screenshot pixels
+
+constexpr int kGrid = 12;                 // blocks per side
+constexpr double kBlockTolerance = 0.04;  // max |mean sRGB difference| per block and channel
+constexpr double kMinSpread = 0.02;       // a region whose block means all lie within this is "uniform"
+
+[[noreturn]] void fail(const std::string& why) {
+  std::printf("FAIL: %s\n", why.c_str());
+  std::exit(1);
+}
+
+Rgb toSrgb(Rgb linear) {
+  Rgb c;
+  for (int k = 0; k < 3; ++k) c[k] = ll::linearToSrgb(std::clamp(std::isfinite(linear[k]) ? linear[k] : 0.0f, 0.0f, 1.0f));
+  return c;
+}
+
+// Mean sRGB colour of image pixels with centres inside [x0,x1) x [y0,y1).
+Rgb blockMean(const Image& img, double x0, double y0, double x1, double y1) {
+  Rgb sum(0.0f);
+  int n = 0;
+  for (int y = static_cast<int>(std::ceil(y0 - 0.5)); y + 0.5 < y1; ++y)
+    for (int x = static_cast<int>(std::ceil(x0 - 0.5)); x + 0.5 < x1; ++x) {
+      if (x < 0 || y < 0 || x >= img.width() || y >= img.height()) continue;
+      sum += img.at(x, y);
+      ++n;
+    }
+  return n > 0 ? sum / static_cast<float>(n) : Rgb(-1.0f);
+}
+
+bool overlaps(const Rect& a, const Rect& b) {
+  return a[0] < b[0] + b[2] && b[0] < a[0] + a[2] && a[1] < b[1] + b[3] && b[1] < a[1] + a[3];
+}
+
+Image srgbOf(const Image& linear) {
+  Image out(linear.width(), linear.height());
+  for (int y = 0; y < linear.height(); ++y)
+    for (int x = 0; x < linear.width(); ++x) out.at(x, y) = toSrgb(linear.at(x, y));
+  return out;
+}
+
+// Compares `region` of the screenshot with columns [u0,u1) of `reference` (both sRGB).
+void compareRegion(const Image& shot, const Rect& region, const Image& reference, double u0, double u1,
+                   const std::vector<Rect>& overlays, const std::string& what) {
+  if (region[2] < kGrid || region[3] < kGrid) fail(what + ": region too small or not drawn");
+  const double rx0 = u0 * reference.width(), rw = (u1 - u0) * reference.width();
+  int compared = 0, bad = 0;
+  double worst = 0.0, lo = 1e9, hi = -1e9;
+  for (int by = 0; by < kGrid; ++by)
+    for (int bx = 0; bx < kGrid; ++bx) {
+      const double fx0 = static_cast<double>(bx) / kGrid, fx1 = static_cast<double>(bx + 1) / kGrid;
+      const double fy0 = static_cast<double>(by) / kGrid, fy1 = static_cast<double>(by + 1) / kGrid;
+      const Rect block{region[0] + fx0 * region[2], region[1] + fy0 * region[3], (fx1 - fx0) * region[2],
+                       (fy1 - fy0) * region[3]};
+      if (std::any_of(overlays.begin(), overlays.end(), [&](const Rect& o) { return overlaps(block, o); })) continue;
+      const Rgb s = blockMean(shot, block[0], block[1], block[0] + block[2], block[1] + block[3]);
+      const Rgb r = blockMean(reference, rx0 + fx0 * rw, fy0 * reference.height(), rx0 + fx1 * rw,
+                              fy1 * reference.height());
+      if (s.r < 0 || r.r < 0) continue;
+      ++compared;
+      const double err = std::max({std::abs(s.r - r.r), std::abs(s.g - r.g), std::abs(s.b - r.b)});
+      worst = std::max(worst, err);
+      if (err > kBlockTolerance) ++bad;
+      lo = std::min(lo, static_cast<double>(s.r + s.g + s.b) / 3);
+      hi = std::max(hi, static_cast<double>(s.r + s.g + s.b) / 3);
+    }
+  if (compared < kGrid * kGrid / 2) fail(what + ": fewer than half the blocks are free of overlays");
+  if (hi - lo < kMinSpread) fail(what + ": the region is uniform (nothing rendered?)");
+  if (bad > 0)
+    fail(what + ": " + std::to_string(bad) + " of " + std::to_string(compared) + " blocks differ by more than " +
+         std::to_string(kBlockTolerance) + " (worst " + std::to_string(worst) + ")");
+  std::printf("ok: %s matches (%d blocks, worst block difference %.4f)\n", what.c_str(), compared, worst);
+}
+
+Rect rectOf(const nlohmann::json& j) { return {j[0].get<double>(), j[1].get<double>(), j[2].get<double>(), j[3].get<double>()}; }
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 4) fail("usage: screenshot_check SHOT.png pane|diff|differs ...");
+  const std::string shotPath = argv[1], mode = argv[2];
+  try {
+    const Image shot = srgbOf(ll::loadImage(shotPath));
+    if (mode == "differs") {
+      const Image other = srgbOf(ll::loadImage(argv[3]));
+      const double rmse = ll::compareImages(shot, other).rmse;
+      if (rmse < 0.01) fail("the two screenshots look the same (RMSE " + std::to_string(rmse) + ")");
+      std::printf("ok: screenshots differ (RMSE %.4f)\n", rmse);
+      return 0;
+    }
+    std::string sidecarPath = shotPath.substr(0, shotPath.rfind('.')) + ".json";
+    std::ifstream in(sidecarPath);
+    if (!in) fail(sidecarPath + ": missing sidecar");
+    const nlohmann::json side = nlohmann::json::parse(in);
+    std::vector<Rect> overlays;
+    for (const auto& o : side["overlays"]) overlays.push_back(rectOf(o));
+    if (mode == "pane") {
+      if (argc < 5) fail("pane needs an index and a reference");
+      const int index = std::stoi(argv[3]);
+      const nlohmann::json& pane = side["panes"].at(static_cast<size_t>(index));
+      if (pane["phase"] != "done") fail("pane " + std::to_string(index) + " is not done: " + pane["phase"].get<std::string>());
+      const double u0 = argc > 6 ? std::stod(argv[5]) : 0.0, u1 = argc > 6 ? std::stod(argv[6]) : 1.0;
+      compareRegion(shot, rectOf(pane["rect"]), srgbOf(ll::loadImage(argv[4])), u0, u1, overlays,
+                    "pane " + std::to_string(index) + " (" + pane["technique"].get<std::string>() + ")");
+      return 0;
+    }
+    if (mode == "diff") {
+      if (argc < 5) fail("diff needs two references");
+      const float usedMax = side["compare"]["diff_max"].get<float>();
+      const Image heat = ll::differenceHeatmap(ll::loadImage(argv[3]), ll::loadImage(argv[4]), ll::DiffMode::Absolute,
+                                               usedMax);
+      compareRegion(shot, rectOf(side["compare"]["rect"]), srgbOf(heat), 0.0, 1.0, overlays, "difference heatmap");
+      return 0;
+    }
+    fail("unknown mode '" + mode + "' (allowed: pane, diff, differs)");
+  } catch (const std::exception& e) {
+    fail(e.what());
+  }
+}
