@@ -153,6 +153,8 @@ FlatBvh buildBvh(const Geometry& geometry, const SplitSettings& settings, Boundi
     }
     bvh.nodes.reserve(2 * static_cast<size_t>(n));
     flatten(*root, bvh.nodes, 0, depth);
+    bvh.sceneCentre = root->bounds.center();
+    bvh.sceneRadius = 0.5f * root->bounds.diagonal();
     bvh.nodes.shrink_to_fit();
     bvh.primIds.resize(n);
     bvh.triangles.resize(n);

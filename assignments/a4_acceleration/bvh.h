@@ -67,6 +67,8 @@ struct FlatBvh {
   std::vector<uint32_t> primIds;          // slot -> primitive id in the Geometry
   std::vector<LeafTriangle> triangles;    // slot -> vertices, when primIds[slot] is a triangle
   uint32_t triangleCount = 0;             // primitive ids below this are triangles
+  Vec3 sceneCentre{0.0f};                 // a sphere holding every primitive, for rounding bounds
+  float sceneRadius = 0.0f;
 };
 
 // What the build reports (AcceleratorStats without the build time).

@@ -21,19 +21,26 @@ struct TraversalRay {
   Vec3 invDir;             // 1/dir per axis; +-infinity for zero components
   bool negX, negY, negZ;   // dir component < 0 (or -0): the slab's near plane is hi
   float invLength2;        // 1 / |dir|^2
-  explicit TraversalRay(const Ray& r)
+  float tSlack;            // rounding of any t computed in this scene, in t units (see cullLimit)
+  TraversalRay(const Ray& r, const FlatBvh& bvh)
       : ray(r), wray(r), invDir(1.0f / r.dir.x, 1.0f / r.dir.y, 1.0f / r.dir.z),
         negX(invDir.x < 0.0f), negY(invDir.y < 0.0f), negZ(invDir.z < 0.0f),
-        invLength2(1.0f / glm::dot(r.dir, r.dir)) {}
+        invLength2(1.0f / glm::dot(r.dir, r.dir)),
+        tSlack(kSlackUlps * std::numeric_limits<float>::epsilon() *
+               (glm::length(r.origin - bvh.sceneCentre) + bvh.sceneRadius) * std::sqrt(invLength2)) {}
+
+  // Below this limit a volume may still hold a hit at distance t. The
+  // triangle test's t and a volume's entry distance round differently, by up
+  // to a few ulps of the distances involved (origin to geometry), so a node
+  // is skipped only when it starts clearly beyond the closest hit.
+  float cullLimit(float t) const { return t + tSlack; }
+
+  static constexpr float kSlackUlps = 32.0f;
 };
 
 // Rounding slack of the slab test (Ize, "Robust BVH Ray Traversal", JCGT
-// 2(2), 2013: 1 + 2 gamma(3)), doubled for the watertight triangle test's own
-// rounding of t.
-constexpr float kBvhRobustScale = 1.0f + 4.0f * 3.0f * (std::numeric_limits<float>::epsilon() * 0.5f);
-
-// The bound below which a volume may still hold a hit at distance `t`.
-inline float cullLimit(float t) { return t + std::abs(t) * (kBvhRobustScale - 1.0f); }
+// 2(2), 2013: 1 + 2 gamma(3)).
+constexpr float kBvhRobustScale = 1.0f + 2.0f * 3.0f * (std::numeric_limits<float>::epsilon() * 0.5f);
 
 // Whether the ray meets the box [lo, hi] somewhere in [ray.tmin, tLimit];
 // tEntry is where it enters (>= ray.tmin). Axis-parallel rays are exact: a
@@ -57,12 +64,16 @@ inline bool rayEntersBox(const TraversalRay& r, const Vec3& lo, const Vec3& hi, 
 }
 
 // Whether the ray meets the sphere (centre, radius) in [ray.tmin, tLimit];
-// tEntry as for boxes. The build pads node spheres for rounding.
+// tEntry as for boxes. The squared gap between the radius and the ray's
+// distance from the centre is padded by its rounding (which grows with the
+// distance of the origin).
 inline bool rayEntersSphere(const TraversalRay& r, const Vec3& centre, float radius, float tLimit, float& tEntry) {
   const Vec3 oc = centre - r.ray.origin;
   const float tc = glm::dot(oc, r.ray.dir) * r.invLength2;  // closest approach to the centre
   const Vec3 perp = oc - tc * r.ray.dir;
-  const float gap = radius * radius - glm::dot(perp, perp);
+  const float distance = std::abs(oc.x) + std::abs(oc.y) + std::abs(oc.z) + radius;  // >= |oc| + radius
+  const float pad = 16.0f * std::numeric_limits<float>::epsilon() * distance * radius;
+  const float gap = radius * radius - glm::dot(perp, perp) + pad;
   tEntry = kInfinity;
   if (!(gap >= 0.0f)) return false;
   const float half = std::sqrt(gap * r.invLength2);

@@ -26,7 +26,7 @@ inline bool enters(const TraversalRay& r, const BvhNode& n, float tLimit, float&
 template <BoundingVolume V, bool AnyHit>
 bool traverse(const FlatBvh& bvh, const TraversalRay& r, Hit& hit, QueryCounters& counters) {
   const BvhNode* nodes = bvh.nodes.data();
-  float tLimit = cullLimit(hit.t);
+  float tLimit = r.cullLimit(hit.t);
   float tEntry;
   if (!enters<V>(r, nodes[0], tLimit, tEntry)) return false;
   StackEntry stack[kBvhStackSize];
@@ -47,7 +47,7 @@ bool traverse(const FlatBvh& bvh, const TraversalRay& r, Hit& hit, QueryCounters
           }
         } else if (closerPrimitiveHit(bvh, s, r, hit)) {
           found = true;
-          tLimit = cullLimit(hit.t);
+          tLimit = r.cullLimit(hit.t);
         }
       }
       if (AnyHit && found) break;
@@ -87,7 +87,7 @@ bool traverse(const FlatBvh& bvh, const TraversalRay& r, Hit& hit, QueryCounters
 bool intersectBvh(const FlatBvh& bvh, const Ray& ray, Hit& hit, QueryCounters& counters) {
   hit = Hit{};
   hit.t = ray.tmax;
-  const TraversalRay r(ray);
+  const TraversalRay r(ray, bvh);
 #if LIGHTLAB_SOLUTION  // A4.2
   if (bvh.nodes.empty()) return false;
   return bvh.volume == BoundingVolume::Box ? traverse<BoundingVolume::Box, false>(bvh, r, hit, counters)
@@ -102,7 +102,7 @@ bool intersectBvh(const FlatBvh& bvh, const Ray& ray, Hit& hit, QueryCounters& c
 }
 
 bool occludedBvh(const FlatBvh& bvh, const Ray& ray, QueryCounters& counters) {
-  const TraversalRay r(ray);
+  const TraversalRay r(ray, bvh);
 #if LIGHTLAB_SOLUTION  // A4.2
   if (bvh.nodes.empty()) return false;
   Hit hit;

@@ -1,0 +1,583 @@
+// Assignment 4 (acceleration structures): every registered accelerator, in
+// every configuration, against brute force on the bunny, the Cornell box with
+// the bunny and a hand-made geometry of hard cases; the BVH's structure and
+// statistics; a complexity probe; and the two student tasks.
+//
+// Exactness: `bvh` must return brute force's closest hit bit for bit (t,
+// primitive, barycentrics) and the same occlusion answer. `embree` uses its
+// own triangle test, so t may differ by rounding and a ray exactly through a
+// shared edge or vertex may report the neighbour; hit/miss may differ only on
+// such grazing rays (a tiny fraction).
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "test_support.h"
+
+#include "a4_tasks.h"
+#include "bvh.h"
+#include "modules/registry.h"
+#include "render/student_task.h"
+#include "scene/scene_loader.h"
+
+namespace ll {
+namespace {
+
+using testing_support::makeRay;
+
+// --- Configurations: every accelerator in the registry, every BVH variant ----------
+
+struct Config {
+  std::string accelerator;
+  std::vector<std::string> sets;  // name=value
+  std::string label() const {
+    std::string s = accelerator;
+    for (const auto& a : sets) s += " " + a;
+    return s;
+  }
+  bool exact() const { return accelerator != "embree"; }
+};
+
+std::vector<Config> allConfigs() {
+  std::vector<Config> configs;
+  for (const AcceleratorInfo& info : accelerators()) {
+    if (info.name == "none") continue;
+    if (info.name == "bvh") {
+      for (const char* split : {"median", "equal-counts", "sah"})
+        for (const char* volume : {"box", "sphere"})
+          configs.push_back({"bvh", {std::string("split=") + split, std::string("volume=") + volume}});
+      configs.push_back({"bvh", {"split=sah", "max_leaf=1", "bins=2"}});
+      configs.push_back({"bvh", {"split=median", "max_leaf=64"}});
+    } else {
+      configs.push_back({info.name, {}});
+    }
+  }
+  return configs;
+}
+
+std::unique_ptr<Accelerator> make(const Config& c, const Geometry& g) {
+  const AcceleratorInfo& info = findAccelerator(c.accelerator);
+  ParamSet params("accelerator '" + c.accelerator + "'", info.params);
+  for (const auto& a : c.sets) params.assign(a);
+  return buildAccelerator(info, params, g);
+}
+
+// --- Rays: random, aimed, through vertices and edges, axis-parallel, from inside ---
+
+Vec3 randomDirection(std::mt19937& rng) {
+  std::normal_distribution<float> n;
+  Vec3 d;
+  do d = Vec3(n(rng), n(rng), n(rng));
+  while (glm::dot(d, d) < 1e-6f);
+  return glm::normalize(d);
+}
+
+std::vector<Ray> makeRays(const Geometry& g, size_t count, uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> u01(0.0f, 1.0f);
+  const Bounds3 b = g.sceneBounds();
+  const Vec3 lo = b.min - 0.25f * b.extent(), span = 1.5f * b.extent();
+  auto inBox = [&] { return lo + Vec3(u01(rng), u01(rng), u01(rng)) * span; };
+  auto anyPrim = [&] { return static_cast<uint32_t>(rng() % g.primitiveCount()); };
+  auto pointOn = [&](uint32_t p) -> Vec3 {
+    if (!g.isTriangle(p)) {
+      const Sphere& s = g.spheres[p - g.triangleCount()];
+      return s.center + s.radius * randomDirection(rng);
+    }
+    const glm::uvec3& t = g.triangles[p];
+    float a = u01(rng), c = u01(rng);
+    if (a + c > 1.0f) a = 1.0f - a, c = 1.0f - c;
+    return (1.0f - a - c) * g.positions[t.x] + a * g.positions[t.y] + c * g.positions[t.z];
+  };
+  auto vertex = [&] { return g.positions[rng() % g.positions.size()]; };
+  auto edgeMid = [&] {
+    const glm::uvec3& t = g.triangles[rng() % g.triangles.size()];
+    return 0.5f * (g.positions[t.x] + g.positions[t.y]);
+  };
+  const bool tris = !g.triangles.empty();
+  std::vector<Ray> rays;
+  rays.reserve(count);
+  for (size_t i = 0; i < count; ++i) {
+    const Vec3 o = inBox();
+    switch (i % 8) {
+      case 0:  // incoherent
+        rays.push_back(makeRay(o, randomDirection(rng)));
+        break;
+      case 1:  // aimed at a point on a primitive (non-unit direction)
+        rays.push_back(makeRay(o, pointOn(anyPrim()) - o));
+        break;
+      case 2:  // through a shared vertex
+        rays.push_back(makeRay(o, (tris ? vertex() : pointOn(anyPrim())) - o));
+        break;
+      case 3:  // through a shared edge
+        rays.push_back(makeRay(o, (tris ? edgeMid() : pointOn(anyPrim())) - o));
+        break;
+      case 4: {  // axis-parallel (two zero components), often exactly along vertex coordinates
+        Vec3 d(0.0f);
+        const auto axis = static_cast<int>(rng() % 3);
+        d[axis] = (rng() & 1) ? 1.0f : -1.0f;
+        Vec3 origin = o;
+        if (tris && (rng() & 1)) {
+          const Vec3 v = vertex();
+          origin = v;
+          origin[axis] = o[axis];
+        }
+        rays.push_back(makeRay(origin, d));
+        break;
+      }
+      case 5: {  // one zero component
+        Vec3 d = randomDirection(rng);
+        d[static_cast<int>(rng() % 3)] = 0.0f;
+        if (glm::dot(d, d) == 0.0f) d = Vec3(1.0f, 0.0f, 0.0f);
+        rays.push_back(makeRay(o, d));
+        break;
+      }
+      case 6: {  // a segment between two surface points, as a shadow ray (finite tmax)
+        const Vec3 a = pointOn(anyPrim()), c = pointOn(anyPrim());
+        if (a == c) {
+          rays.push_back(makeRay(o, randomDirection(rng)));
+          break;
+        }
+        rays.push_back(makeRay(a, c - a, 1e-4f, 1.0f - 1e-4f));
+        break;
+      }
+      default: {  // from inside the scene, with tmin = 0 and a random finite tmax
+        const Vec3 inside = b.min + Vec3(u01(rng), u01(rng), u01(rng)) * b.extent();
+        rays.push_back(makeRay(inside, randomDirection(rng), 0.0f, (rng() & 1) ? kInfinity : u01(rng) * b.diagonal()));
+        break;
+      }
+    }
+  }
+  return rays;
+}
+
+// --- The comparison -----------------------------------------------------------------
+
+struct Reference {
+  std::vector<Hit> hits;
+  std::vector<char> occluded;
+};
+
+// Brute force's answers. Its occlusion answer equals "the closest hit exists"
+// (both test every primitive on (tmin, tmax)); checked on the first rays,
+// then taken from the closest hit to halve the test's time.
+Reference bruteForce(const Geometry& g, const std::vector<Ray>& rays) {
+  const auto none = make({"none", {}}, g);
+  Reference ref;
+  ref.hits.resize(rays.size());
+  ref.occluded.resize(rays.size());
+  QueryCounters counters;
+  for (size_t i = 0; i < rays.size(); ++i) {
+    none->intersect(rays[i], ref.hits[i], counters);
+    ref.occluded[i] = ref.hits[i].valid();
+    if (i < 2000) {
+      EXPECT_EQ(none->occluded(rays[i], counters), ref.hits[i].valid()) << "ray " << i;
+    }
+  }
+  return ref;
+}
+
+// makeRays' kinds 2-5 aim exactly at vertices and edges or run along axes:
+// there Embree's triangle test may differ from ours by rounding.
+bool grazing(size_t i, size_t generated) { return i >= generated || (i % 8 >= 2 && i % 8 <= 5); }
+
+// Whether embree's answer `h` is as good as brute force's `r`: the same hit
+// point to 1e-5 of the scene's size (Embree computes t its own way), and the
+// primitive either the same or one hit at that point too (a tie, or a ray
+// through a shared edge).
+bool closeEnough(const Geometry& g, const Ray& ray, const Hit& h, const Hit& r) {
+  if (h.valid() != r.valid()) return false;
+  if (!h.valid()) return true;
+  const float tol = 1e-5f * g.sceneBounds().diagonal() / glm::length(ray.dir) + 1e-5f * std::abs(r.t);
+  if (std::abs(h.t - r.t) > tol) return false;
+  if (h.prim == r.prim) return true;
+  Hit alone;
+  alone.t = kInfinity;
+  const bool hits = g.intersect(h.prim, ray, WatertightRay(ray), alone);
+  return !hits || std::abs(alone.t - r.t) <= tol;  // a miss by our test: it grazed the shared edge
+}
+
+// `generated`: how many of `rays` came from makeRays (the rest are hand-made grazing rays).
+void expectMatchesBruteForce(const Geometry& g, const std::vector<Ray>& rays, size_t generated, const Reference& ref,
+                             const std::vector<Config>& configs) {
+  for (const Config& c : configs) {
+    SCOPED_TRACE(c.label());
+    const auto accel = make(c, g);
+    QueryCounters counters;
+    size_t wrongHits = 0, wrongOcclusion = 0, wrongGrazing = 0;
+    for (size_t i = 0; i < rays.size(); ++i) {
+      Hit h;
+      const bool found = accel->intersect(rays[i], h, counters);
+      const Hit& r = ref.hits[i];
+      const bool same = c.exact() ? (found == r.valid() && h.prim == r.prim && h.t == r.t && h.b1 == r.b1 &&
+                                     h.b2 == r.b2)
+                                  : (found == h.valid() && closeEnough(g, rays[i], h, r));
+      const bool occ = accel->occluded(rays[i], counters);
+      const bool occSame = occ == (ref.occluded[i] != 0);
+      if (!c.exact()) {
+        // Embree skips zero-area triangles (the loaders drop them too) and may
+        // decide rays through vertices and edges, or grazing a surface, the
+        // other way: counted, and only their number is checked.
+        const bool degenerate = r.valid() && g.area(r.prim) == 0.0f;
+        if (grazing(i, generated) || degenerate)
+          wrongGrazing += (!same || !occSame) ? 1 : 0;
+        else {
+          wrongHits += same ? 0 : 1;
+          wrongOcclusion += occSame ? 0 : 1;
+        }
+        continue;
+      }
+      if (!same && ++wrongHits <= 3)
+        ADD_FAILURE() << "ray " << i << " o=(" << rays[i].origin.x << "," << rays[i].origin.y << ","
+                      << rays[i].origin.z << ") d=(" << rays[i].dir.x << "," << rays[i].dir.y << "," << rays[i].dir.z
+                      << ") [" << rays[i].tmin << "," << rays[i].tmax << "]: got prim " << h.prim << " t=" << h.t
+                      << ", brute force prim " << r.prim << " t=" << r.t;
+      if (!occSame && ++wrongOcclusion <= 3)
+        ADD_FAILURE() << "ray " << i << ": occlusion differs from brute force (" << int(ref.occluded[i]) << ")";
+    }
+    // Embree's own triangle test may decide a few rays grazing an edge differently.
+    const size_t allowed = c.exact() ? 0 : rays.size() / 5000;
+    EXPECT_LE(wrongHits, allowed) << "closest hits differing from brute force, of " << rays.size();
+    EXPECT_LE(wrongOcclusion, allowed) << "occlusion answers differing from brute force, of " << rays.size();
+    EXPECT_LE(wrongGrazing, rays.size() / 50) << "answers differing on rays through vertices and edges";
+    if (!c.exact())
+      std::printf("[ %s ] answers differing: %zu closest, %zu occlusion of %zu ordinary rays; %zu of the rays through "
+                  "vertices, edges, degenerate triangles\n",
+                  c.label().c_str(), wrongHits, wrongOcclusion, rays.size(), wrongGrazing);
+  }
+}
+
+void checkScene(const std::string& file, size_t rayCount) {
+  const Scene scene = loadScene(std::string(LIGHTLAB_DATA_DIR) + "/scenes/" + file);
+  const std::vector<Ray> rays = makeRays(scene.geometry, rayCount, 4242);
+  const Reference ref = bruteForce(scene.geometry, rays);
+  expectMatchesBruteForce(scene.geometry, rays, rays.size(), ref, allConfigs());
+}
+
+TEST(A4_Accelerators, MatchBruteForceOnTheBunny) { checkScene("bunny.json", 100000); }
+TEST(A4_Accelerators, MatchBruteForceOnTheCornellBunny) { checkScene("cornell_bunny.json", 100000); }
+
+// --- Hard cases, made by hand -----------------------------------------------------
+
+void addTriangle(Geometry& g, Vec3 a, Vec3 b, Vec3 c) {
+  const auto base = static_cast<uint32_t>(g.positions.size());
+  g.positions.insert(g.positions.end(), {a, b, c});
+  g.triangles.emplace_back(base, base + 1, base + 2);
+  g.triangleObject.push_back(0);
+}
+
+void addQuad(Geometry& g, Vec3 o, Vec3 e1, Vec3 e2) {  // two triangles sharing the diagonal
+  addTriangle(g, o, o + e1, o + e1 + e2);
+  addTriangle(g, o, o + e1 + e2, o + e2);
+}
+
+void addSphere(Geometry& g, Vec3 c, float r) {
+  g.spheres.push_back({c, r});
+  g.sphereObject.push_back(0);
+}
+
+Geometry hardCases() {
+  Geometry g;
+  // Axis-aligned grids in the planes x = 0, 1, 2: median splits fall exactly on x = 1.
+  for (int plane = 0; plane < 3; ++plane)
+    for (int i = 0; i < 6; ++i)
+      for (int j = 0; j < 6; ++j)
+        addQuad(g, Vec3(float(plane), float(i) / 6.0f, float(j) / 6.0f), Vec3(0, 1.0f / 6.0f, 0),
+                Vec3(0, 0, 1.0f / 6.0f));
+  // The same triangle ten times (identical centroids, identical t: ties go to the smaller id).
+  for (int i = 0; i < 10; ++i) addTriangle(g, {0.2f, 0.2f, 1.5f}, {0.8f, 0.3f, 1.5f}, {0.4f, 0.9f, 1.5f});
+  // Different triangles around one centroid.
+  for (int i = 0; i < 12; ++i) {
+    const float a = float(i) * 0.5f;
+    const Vec3 c(1.5f, 0.5f, 0.5f), u(std::cos(a), std::sin(a), 0.3f), v(-std::sin(a), std::cos(a), -0.2f);
+    addTriangle(g, c + 0.3f * u, c + 0.3f * v - 0.15f * u, c - 0.3f * v - 0.15f * u);
+  }
+  // Degenerate triangles: a repeated vertex, collinear vertices, a point.
+  addTriangle(g, {0.5f, 0.5f, 0.5f}, {0.5f, 0.5f, 0.5f}, {0.9f, 0.1f, 0.3f});
+  addTriangle(g, {0.0f, 0.0f, 0.0f}, {1.0f, 1.0f, 1.0f}, {2.0f, 2.0f, 2.0f});
+  addTriangle(g, {1.2f, 0.7f, 0.1f}, {1.2f, 0.7f, 0.1f}, {1.2f, 0.7f, 0.1f});
+  // A closed unit cube (rays start inside it) sharing the plane x = 2 with a grid.
+  const Vec3 c0(2.0f, 0.0f, 0.0f);
+  addQuad(g, c0, {1, 0, 0}, {0, 1, 0});
+  addQuad(g, c0 + Vec3(0, 0, 1), {0, 1, 0}, {1, 0, 0});
+  addQuad(g, c0, {0, 0, 1}, {1, 0, 0});
+  addQuad(g, c0 + Vec3(0, 1, 0), {1, 0, 0}, {0, 0, 1});
+  addQuad(g, c0, {0, 1, 0}, {0, 0, 1});
+  addQuad(g, c0 + Vec3(1, 0, 0), {0, 0, 1}, {0, 1, 0});
+  // Spheres: duplicates, nested, tiny, one crossing a grid plane.
+  addSphere(g, {0.5f, 1.5f, 0.5f}, 0.3f);
+  addSphere(g, {0.5f, 1.5f, 0.5f}, 0.3f);
+  addSphere(g, {0.5f, 1.5f, 0.5f}, 0.1f);
+  addSphere(g, {1.0f, 0.5f, 0.5f}, 0.2f);
+  addSphere(g, {2.5f, 0.5f, 0.5f}, 1e-3f);
+  return g;
+}
+
+TEST(A4_Accelerators, MatchBruteForceOnHardCases) {
+  const Geometry g = hardCases();
+  std::vector<Ray> rays = makeRays(g, 100000, 7);
+  const size_t generated = rays.size();
+  // Axis-parallel rays exactly along the grid lines, edges and vertices of the planes.
+  for (int i = 0; i <= 6; ++i)
+    for (int j = 0; j <= 6; ++j)
+      for (float s : {1.0f, -1.0f}) {
+        const float y = float(i) / 6.0f, z = float(j) / 6.0f;
+        rays.push_back(makeRay({s > 0 ? -1.0f : 4.0f, y, z}, {s, 0, 0}));
+        rays.push_back(makeRay({0.0f, y, z}, {0, s, 0}));  // lying in the plane x = 0
+        rays.push_back(makeRay({1.0f, y, z}, {0, 0, s}));  // lying in the plane x = 1
+        rays.push_back(makeRay({2.5f, y, z}, {s, 0, 0}, 0.0f, 0.5f));  // ends exactly on x = 2 or 3
+      }
+  const Reference ref = bruteForce(g, rays);
+  expectMatchesBruteForce(g, rays, generated, ref, allConfigs());
+}
+
+TEST(A4_Accelerators, EmptySceneAndSinglePrimitive) {
+  Geometry empty;
+  Geometry one;
+  addSphere(one, {0, 0, 0}, 1.0f);
+  for (const Config& c : allConfigs()) {
+    SCOPED_TRACE(c.label());
+    QueryCounters counters;
+    Hit h;
+    const auto a = make(c, empty);
+    EXPECT_FALSE(a->intersect(makeRay({0, 0, -5}, {0, 0, 1}), h, counters));
+    EXPECT_FALSE(h.valid());
+    EXPECT_FALSE(a->occluded(makeRay({0, 0, -5}, {0, 0, 1}), counters));
+    const auto b = make(c, one);
+    ASSERT_TRUE(b->intersect(makeRay({0, 0, -5}, {0, 0, 1}), h, counters));
+    EXPECT_EQ(h.prim, 0u);
+    EXPECT_NEAR(h.t, 4.0f, 1e-5f);
+    EXPECT_TRUE(b->occluded(makeRay({0, 0, 0}, {0, 1, 0}), counters));  // from inside
+  }
+}
+
+// --- The BVH's structure and statistics ---------------------------------------------
+
+Geometry bunny() { return loadScene(std::string(LIGHTLAB_DATA_DIR) + "/scenes/bunny.json").geometry; }
+
+bool contains(const a4::BvhNode& outer, const Bounds3& inner) {
+  return glm::all(glm::lessThanEqual(outer.lo, inner.min)) && glm::all(glm::greaterThanEqual(outer.hi, inner.max));
+}
+
+// Every primitive in exactly one leaf, boxes nested, leaves no larger than max_leaf.
+void expectWellFormed(const a4::FlatBvh& bvh, const Geometry& g, int maxLeaf) {
+  std::vector<int> seen(g.primitiveCount(), 0);
+  for (size_t i = 0; i < bvh.nodes.size(); ++i) {
+    const a4::BvhNode& n = bvh.nodes[i];
+    if (n.isLeaf()) {
+      EXPECT_LE(n.count, static_cast<uint32_t>(maxLeaf));
+      for (uint32_t s = n.offset; s < n.offset + n.count; ++s) {
+        ++seen[bvh.primIds[s]];
+        EXPECT_TRUE(contains(n, g.bounds(bvh.primIds[s])));
+      }
+    } else {
+      ASSERT_LT(n.offset, bvh.nodes.size());
+      for (size_t child : {i + 1, size_t{n.offset}}) {
+        Bounds3 b;
+        b.min = bvh.nodes[child].lo;
+        b.max = bvh.nodes[child].hi;
+        EXPECT_TRUE(contains(n, b));
+      }
+    }
+  }
+  for (uint32_t p = 0; p < g.primitiveCount(); ++p) EXPECT_EQ(seen[p], 1) << "primitive " << p;
+}
+
+TEST(A4_Bvh, EverySplitMethodBuildsAWellFormedTree) {
+  if (!LIGHTLAB_SOLUTION) GTEST_SKIP() << "needs A4.1";
+  const Geometry g = bunny();
+  const Geometry h = hardCases();
+  for (auto method : {a4::SplitMethod::Median, a4::SplitMethod::EqualCounts, a4::SplitMethod::Sah})
+    for (int maxLeaf : {1, 4, 16}) {
+      a4::SplitSettings s;
+      s.method = method;
+      s.maxLeaf = maxLeaf;
+      SCOPED_TRACE(std::to_string(int(method)) + " max_leaf=" + std::to_string(maxLeaf));
+      a4::BvhBuildInfo info;
+      const a4::FlatBvh bvh = a4::buildBvh(g, s, a4::BoundingVolume::Box, &info);
+      expectWellFormed(bvh, g, maxLeaf);
+      EXPECT_LE(info.depth, a4::kBvhMaxDepth);
+      EXPECT_LT(info.depth, 64);
+      expectWellFormed(a4::buildBvh(h, s, a4::BoundingVolume::Box), h, maxLeaf);
+    }
+}
+
+TEST(A4_Bvh, StatisticsAndTheSahPaysOff) {
+  const Geometry g = bunny();
+  auto statsOf = [&](const std::string& split, const std::string& volume) {
+    return make({"bvh", {"split=" + split, "volume=" + volume}}, g)->stats();
+  };
+  const AcceleratorStats sah = statsOf("sah", "box"), median = statsOf("median", "box"),
+                         equal = statsOf("equal-counts", "box"), sphere = statsOf("sah", "sphere");
+  EXPECT_GT(sah.nodeCount, g.primitiveCount() / 4);
+  EXPECT_LT(sah.nodeCount, 2 * size_t{g.primitiveCount()});
+  EXPECT_GE(sah.memoryBytes, sah.nodeCount * sizeof(a4::BvhNode));
+  EXPECT_GT(sah.depth, 5);
+  EXPECT_GT(sah.sahCost, 1.0);
+  EXPECT_GE(sah.buildSeconds, 0.0);
+  if (LIGHTLAB_SOLUTION) {
+    EXPECT_LE(sah.sahCost, median.sahCost);
+    EXPECT_LE(sah.sahCost, equal.sahCost);
+    EXPECT_GT(sphere.sahCost, sah.sahCost);  // spheres fit triangles more loosely than boxes
+  }
+}
+
+// --- Complexity: work per ray grows like log n ----------------------------------------
+
+Geometry sphereMesh(int rings) {  // a UV sphere of about 4 rings^2 triangles
+  Geometry g;
+  const int segments = 2 * rings;
+  auto at = [&](int i, int j) {
+    const float theta = kPi * float(i) / float(rings), phi = 2.0f * kPi * float(j) / float(segments);
+    return Vec3(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
+  };
+  for (int i = 0; i < rings; ++i)
+    for (int j = 0; j < segments; ++j) {
+      const Vec3 a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
+      if (i > 0) addTriangle(g, a, b, d);
+      if (i < rings - 1) addTriangle(g, b, c, d);
+    }
+  return g;
+}
+
+TEST(A4_Bvh, NodesVisitedGrowLogarithmically) {
+  if (!LIGHTLAB_SOLUTION) GTEST_SKIP() << "needs A4.1 and A4.2";
+  const Geometry small = sphereMesh(24), large = sphereMesh(192);  // 2.3k and 147k triangles: 64x
+  ASSERT_GT(large.primitiveCount(), 60 * small.primitiveCount());
+  auto perRay = [](const Geometry& g, const std::string& split) {
+    const auto a = make({"bvh", {"split=" + split}}, g);
+    std::mt19937 rng(5);
+    QueryCounters c;
+    const int n = 20000;
+    for (int i = 0; i < n; ++i) {
+      const Vec3 o = 3.0f * randomDirection(rng);
+      const Vec3 target = 0.5f * randomDirection(rng);
+      Hit h;
+      a->intersect(makeRay(o, target - o), h, c);
+    }
+    return std::pair(double(c.nodesVisited) / n, double(c.primitivesTested) / n);
+  };
+  for (const char* split : {"median", "equal-counts", "sah"}) {
+    const auto [nodesSmall, primsSmall] = perRay(small, split);
+    const auto [nodesLarge, primsLarge] = perRay(large, split);
+    // log(147k) / log(2.3k) = 1.5; linear growth would be 64, square-root growth 8.
+    EXPECT_LT(nodesLarge / nodesSmall, 2.5) << split << ": " << nodesSmall << " -> " << nodesLarge << " nodes/ray";
+    EXPECT_LT(primsLarge / primsSmall, 2.5) << split << ": " << primsSmall << " -> " << primsLarge << " prims/ray";
+  }
+}
+
+// --- The student tasks -------------------------------------------------------------
+
+template <class F>
+testing::AssertionResult implemented(const char* id, F&& probe) {
+  TaskLog log;
+  {
+    const ScopedTaskLog scope(&log);
+    probe();
+  }
+  const auto missing = log.missing();
+  const auto it = missing.find(id);
+  if (it == missing.end()) return testing::AssertionSuccess();
+  return testing::AssertionFailure() << id << " not implemented (" << it->second << ")";
+}
+
+std::vector<a4::BuildPrim> buildPrims(const Geometry& g) {
+  std::vector<a4::BuildPrim> prims(g.primitiveCount());
+  for (uint32_t p = 0; p < g.primitiveCount(); ++p) prims[p] = {g.bounds(p), g.centroid(p), p};
+  return prims;
+}
+
+TEST(A4_1_Split, PartitionsEveryMethodAndHonoursMaxLeaf) {
+  const Geometry g = bunny();
+  std::vector<a4::BuildPrim> prims = buildPrims(g);
+  Bounds3 all;
+  for (const auto& p : prims) all.extend(p.bounds);
+  ASSERT_TRUE(implemented("A4.1", [&] { a4::splitPrimitives(prims, all, a4::SplitSettings{}); }));
+  for (auto method : {a4::SplitMethod::Median, a4::SplitMethod::EqualCounts, a4::SplitMethod::Sah}) {
+    a4::SplitSettings s;
+    s.method = method;
+    const size_t k = a4::splitPrimitives(prims, all, s);
+    EXPECT_GT(k, 0u);
+    EXPECT_LT(k, prims.size());
+    if (method == a4::SplitMethod::EqualCounts) {
+      EXPECT_EQ(k, prims.size() / 2);
+    }
+    std::vector<int> seen(prims.size(), 0);  // still a permutation
+    for (const auto& p : prims) ++seen[p.prim];
+    EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), static_cast<long>(prims.size()));
+    // Identical centroids: still split while above max_leaf, a leaf at or below it.
+    std::vector<a4::BuildPrim> same(10, prims[0]);
+    s.maxLeaf = 4;
+    const size_t kSame = a4::splitPrimitives(same, prims[0].bounds, s);
+    EXPECT_TRUE(kSame > 0 && kSame < same.size());
+    std::vector<a4::BuildPrim> few(3, prims[0]);
+    EXPECT_EQ(a4::splitPrimitives(few, prims[0].bounds, s), 0u);
+  }
+}
+
+TEST(A4_1_Split, SahSeparatesAClusterFromAnOutlier) {
+  // 100 tiny boxes near the origin and one far away: the SAH cuts off the outlier's
+  // empty space, where the spatial median would too -- but equal counts would not.
+  std::vector<a4::BuildPrim> prims;
+  Bounds3 all;
+  std::mt19937 rng(1);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  for (uint32_t i = 0; i <= 100; ++i) {
+    const Vec3 c = i < 100 ? Vec3(u(rng), u(rng), u(rng)) : Vec3(100.0f, 0.5f, 0.5f);
+    Bounds3 b;
+    b.extend(c - Vec3(0.01f));
+    b.extend(c + Vec3(0.01f));
+    prims.push_back({b, c, i});
+    all.extend(b);
+  }
+  a4::SplitSettings s;
+  ASSERT_TRUE(implemented("A4.1", [&] { a4::splitPrimitives(prims, all, s); }));
+  const size_t k = a4::splitPrimitives(prims, all, s);
+  const bool outlierAlone = (k == 100 && prims[100].prim == 100) || (k == 1 && prims[0].prim == 100);
+  EXPECT_TRUE(outlierAlone) << "k = " << k;
+}
+
+TEST(A4_2_Traversal, VisitsFewNodesAndStopsAtTheFirstOccluder) {
+  const Geometry g = bunny();
+  const auto bvh = make({"bvh", {}}, g);
+  const Ray ray = makeRay(g.sceneBounds().center() + Vec3(0, 0, 10), {0, 0, -1});
+  Hit h;
+  QueryCounters c;
+  ASSERT_TRUE(implemented("A4.2", [&] { bvh->intersect(ray, h, c); }));
+  ASSERT_TRUE(implemented("A4.2", [&] { bvh->occluded(ray, c); }));
+  QueryCounters closest, any;
+  std::mt19937 rng(3);
+  for (int i = 0; i < 1000; ++i) {
+    const Vec3 o = g.sceneBounds().center() + 2.0f * g.sceneBounds().diagonal() * randomDirection(rng);
+    const Ray r = makeRay(o, g.sceneBounds().center() - o);
+    bvh->intersect(r, h, closest);
+    bvh->occluded(r, any);
+  }
+  EXPECT_LT(closest.primitivesTested, 1000u * g.primitiveCount() / 50);  // far from brute force
+  EXPECT_GT(closest.nodesVisited, 1000u);
+  EXPECT_LT(any.nodesVisited, closest.nodesVisited);  // any hit stops early
+}
+
+TEST(A4_Stubs, BvhStaysCorrectWhateverIsMissing) {
+  // With the stubs (student tree) the accelerator must still answer like brute force;
+  // with the solution this is a plain check. Either way: no crash, same hits.
+  const Geometry g = bunny();
+  const std::vector<Ray> rays = makeRays(g, 2000, 11);
+  const Reference ref = bruteForce(g, rays);
+  TaskLog log;
+  const ScopedTaskLog scope(&log);
+  expectMatchesBruteForce(g, rays, rays.size(), ref, {Config{"bvh", {}}});
+  if (!LIGHTLAB_SOLUTION) {
+    EXPECT_EQ(log.missing().count("A4.1"), 1u);
+    EXPECT_EQ(log.missing().count("A4.2"), 1u);
+  }
+}
+
+}  // namespace
+}  // namespace ll

@@ -1,0 +1,177 @@
+// Accelerator benchmarks: closest-hit and any-hit throughput (Mrays/s, one
+// thread unless the name says t2) for coherent (camera) and incoherent
+// (random origin in the scene's box, random direction) rays, and build time,
+// for every BVH split method and Embree in the same run, on the bunny
+// (3.7k, 59k, 235k triangles) and the Cornell box with the 59k bunny.
+//
+//   build-dir/tests/bench/lightlab_bench --benchmark_filter=Accel
+//     --benchmark_repetitions=5 --benchmark_enable_random_interleaving=true
+//     --benchmark_min_time=0.2 --benchmark_format=json > accel.json
+//   python3 tests/bench/accel_ratios.py accel.json    # ratios to Embree, median of pairs
+//
+// The scenes, ray sets and built accelerators are made once, outside the timing.
+#include <benchmark/benchmark.h>
+
+#include <map>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include "modules/registry.h"
+#include "scene/camera.h"
+#include "scene/scene_loader.h"
+
+namespace {
+
+using namespace ll;
+
+struct BenchScene {
+  const char* name;
+  std::string path;
+};
+
+const std::vector<BenchScene>& benchScenes() {
+  static const std::vector<BenchScene> kScenes = {
+      {"bunny3.7k", std::string(LIGHTLAB_DATA_DIR) + "/scenes/bunny.json"},
+      {"bunny59k", std::string(LIGHTLAB_BUILD_DATA_DIR) + "/scenes/bunny_59k.json"},
+      {"bunny235k", std::string(LIGHTLAB_BUILD_DATA_DIR) + "/scenes/bunny_235k.json"},
+      {"cornell59k", std::string(LIGHTLAB_BUILD_DATA_DIR) + "/scenes/cornell_bunny_59k.json"},
+  };
+  return kScenes;
+}
+
+struct BenchAccel {
+  const char* label;
+  const char* name;
+  std::vector<std::string> sets;
+};
+
+const std::vector<BenchAccel>& benchAccels() {
+  static const std::vector<BenchAccel> kAccels = [] {
+    std::vector<BenchAccel> a = {{"bvh-sah", "bvh", {"split=sah"}},
+                                 {"bvh-median", "bvh", {"split=median"}},
+                                 {"bvh-equal", "bvh", {"split=equal-counts"}},
+                                 {"bvh-sah-sphere", "bvh", {"split=sah", "volume=sphere"}}};
+    for (const AcceleratorInfo& info : accelerators())
+      if (info.name == "embree") {
+        a.push_back({"embree", "embree", {"robust=false"}});  // Embree's own defaults: the yardstick
+        a.push_back({"embree-robust", "embree", {"robust=true"}});
+      }
+    return a;
+  }();
+  return kAccels;
+}
+
+const Scene& scene(const BenchScene& s) {
+  static std::map<std::string, std::unique_ptr<Scene>> cache;
+  auto& slot = cache[s.name];
+  if (!slot) slot = std::make_unique<Scene>(loadScene(s.path));
+  return *slot;
+}
+
+ParamSet paramsOf(const BenchAccel& a) {
+  const AcceleratorInfo& info = findAccelerator(a.name);
+  ParamSet p(std::string("accelerator '") + a.name + "'", info.params);
+  for (const auto& v : a.sets) p.assign(v);
+  return p;
+}
+
+const Accelerator& accelerator(const BenchScene& s, const BenchAccel& a) {
+  static std::map<std::string, std::unique_ptr<Accelerator>> cache;
+  auto& slot = cache[std::string(s.name) + "/" + a.label];
+  if (!slot) slot = buildAccelerator(findAccelerator(a.name), paramsOf(a), scene(s).geometry);
+  return *slot;
+}
+
+constexpr int kImageSize = 256;  // camera rays: one per pixel of a 256x256 image
+
+const std::vector<Ray>& rays(const BenchScene& s, bool coherent) {
+  static std::map<std::string, std::vector<Ray>> cache;
+  auto& slot = cache[std::string(s.name) + (coherent ? "/coherent" : "/incoherent")];
+  if (!slot.empty()) return slot;
+  const Scene& sc = scene(s);
+  if (coherent) {
+    Camera cam = sc.camera;
+    cam.width = cam.height = kImageSize;
+    const CameraFrame frame(cam);
+    for (int y = 0; y < kImageSize; ++y)
+      for (int x = 0; x < kImageSize; ++x)
+        slot.push_back(referenceCameraRay(cam, frame, float(x) + 0.5f, float(y) + 0.5f));
+  } else {
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    std::normal_distribution<float> n;
+    const Bounds3 b = sc.geometry.sceneBounds();
+    for (int i = 0; i < kImageSize * kImageSize; ++i) {
+      Ray r;
+      r.origin = b.min + Vec3(u(rng), u(rng), u(rng)) * b.extent();
+      r.dir = glm::normalize(Vec3(n(rng), n(rng), n(rng)));
+      slot.push_back(r);
+    }
+  }
+  return slot;
+}
+
+void trace(benchmark::State& state, const BenchScene& s, const BenchAccel& a, bool coherent, bool anyHit,
+           int threads) {
+  const Accelerator& accel = accelerator(s, a);
+  const std::vector<Ray>& rs = rays(s, coherent);
+  tbb::task_arena arena(threads);
+  for (auto _ : state) {
+    arena.execute([&] {
+      tbb::parallel_for(tbb::blocked_range<size_t>(0, rs.size(), 1024), [&](const tbb::blocked_range<size_t>& range) {
+        QueryCounters counters;
+        uint64_t local = 0;
+        for (size_t i = range.begin(); i != range.end(); ++i) {
+          Hit h;
+          local += anyHit ? accel.occluded(rs[i], counters) : accel.intersect(rs[i], h, counters);
+        }
+        benchmark::DoNotOptimize(local);
+      });
+    });
+  }
+  state.counters["Mrays/s"] =
+      benchmark::Counter(static_cast<double>(rs.size()) * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
+}
+
+void build(benchmark::State& state, const BenchScene& s, const BenchAccel& a) {
+  const Geometry& g = scene(s).geometry;
+  const AcceleratorInfo& info = findAccelerator(a.name);
+  const ParamSet p = paramsOf(a);
+  for (auto _ : state) {
+    auto accel = buildAccelerator(info, p, g);
+    benchmark::DoNotOptimize(accel.get());
+  }
+  state.counters["Mprims/s"] = benchmark::Counter(static_cast<double>(g.primitiveCount()) * 1e-6,
+                                                  benchmark::Counter::kIsIterationInvariantRate);
+}
+
+// Registers Accel/<closest|anyhit>/<scene>/<coherent|incoherent>/<accel>[/t2] and Accel/build/<scene>/<accel>.
+const bool kRegistered = [] {
+  for (const BenchScene& s : benchScenes())
+    for (const BenchAccel& a : benchAccels()) {
+      for (bool anyHit : {false, true})
+        for (bool coherent : {true, false}) {
+          const std::string name = std::string("Accel/") + (anyHit ? "anyhit/" : "closest/") + s.name + "/" +
+                                   (coherent ? "coherent/" : "incoherent/") + a.label;
+          benchmark::RegisterBenchmark(name.c_str(), [&s, &a, coherent, anyHit](benchmark::State& st) {
+            trace(st, s, a, coherent, anyHit, 1);
+          })->Unit(benchmark::kMillisecond)->UseRealTime();
+          if (!anyHit && !coherent && std::string(s.name) == "bunny59k")
+            benchmark::RegisterBenchmark((name + "/t2").c_str(), [&s, &a](benchmark::State& st) {
+              trace(st, s, a, false, false, 2);
+            })->Unit(benchmark::kMillisecond)->UseRealTime();
+        }
+      benchmark::RegisterBenchmark((std::string("Accel/build/") + s.name + "/" + a.label).c_str(),
+                                   [&s, &a](benchmark::State& st) { build(st, s, a); })
+          ->Unit(benchmark::kMillisecond)
+          ->UseRealTime();
+    }
+  return true;
+}();
+
+}  // namespace
