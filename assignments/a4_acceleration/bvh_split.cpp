@@ -1,6 +1,5 @@
 // A4.1 BVH build: choosing where a node splits.
 #include <algorithm>
-#include <array>
 
 #include "a4_tasks.h"
 #include "render/student_task.h"
@@ -54,40 +53,55 @@ size_t sahSplit(std::span<BuildPrim> prims, const Bounds3& bounds, const Bounds3
   const float nodeArea = halfArea(bounds);
   if (!(nodeArea > 0.0f)) return n <= static_cast<size_t>(s.maxLeaf) ? 0 : equalCounts(prims, widestAxis(cb));
 
+  // One pass over the primitives fills the bins of all three axes. (Plain
+  // structs, initialised only as far as used: this runs once per node.)
+  struct Bin {
+    Vec3 lo, hi;
+    size_t count;
+  };
+  Bin binsOf[3][kMaxBins];
+  Vec3 scale(0.0f);  // 0 on an axis without extent: everything lands in bin 0 and the axis is skipped
+  for (int axis = 0; axis < 3; ++axis) {
+    const float extent = cb.max[axis] - cb.min[axis];
+    if (extent > 0.0f) scale[axis] = static_cast<float>(bins) / extent;
+    for (int i = 0; i < bins; ++i) binsOf[axis][i] = {Vec3(kInfinity), Vec3(-kInfinity), 0};
+  }
+  for (const BuildPrim& p : prims)
+    for (int axis = 0; axis < 3; ++axis) {
+      Bin& bin = binsOf[axis][std::min(bins - 1, static_cast<int>((p.centroid[axis] - cb.min[axis]) * scale[axis]))];
+      bin.lo = glm::min(bin.lo, p.bounds.min);
+      bin.hi = glm::max(bin.hi, p.bounds.max);
+      ++bin.count;
+    }
+
   float bestCost = kInfinity;
   int bestAxis = -1, bestBoundary = 0;  // left = bins [0, bestBoundary)
   for (int axis = 0; axis < 3; ++axis) {
-    const float lo = cb.min[axis], extent = cb.max[axis] - lo;
-    if (!(extent > 0.0f)) continue;
-    const float scale = static_cast<float>(bins) / extent;
-    std::array<Bounds3, kMaxBins> binBounds{};
-    std::array<size_t, kMaxBins> binCount{};
-    for (const BuildPrim& p : prims) {
-      const int b = std::min(bins - 1, static_cast<int>((p.centroid[axis] - lo) * scale));
-      binBounds[static_cast<size_t>(b)].extend(p.bounds);
-      ++binCount[static_cast<size_t>(b)];
-    }
+    if (!(scale[axis] > 0.0f)) continue;
+    const Bin* bin = binsOf[axis];
     // Sweep from the right: area and count of bins [i, bins).
-    std::array<float, kMaxBins> rightArea{};
-    std::array<size_t, kMaxBins> rightCount{};
+    float rightArea[kMaxBins];
+    size_t rightCount[kMaxBins];
     Bounds3 acc;
     size_t count = 0;
     for (int i = bins - 1; i > 0; --i) {
-      acc.extend(binBounds[static_cast<size_t>(i)]);
-      count += binCount[static_cast<size_t>(i)];
-      rightArea[static_cast<size_t>(i)] = halfArea(acc);
-      rightCount[static_cast<size_t>(i)] = count;
+      acc.min = glm::min(acc.min, bin[i].lo);  // (an empty bin's lo is +inf, its hi -inf)
+      acc.max = glm::max(acc.max, bin[i].hi);
+      count += bin[i].count;
+      rightArea[i] = halfArea(acc);
+      rightCount[i] = count;
     }
     acc = Bounds3{};
     count = 0;
     for (int i = 1; i < bins; ++i) {
-      acc.extend(binBounds[static_cast<size_t>(i - 1)]);
-      count += binCount[static_cast<size_t>(i - 1)];
-      const size_t nRight = rightCount[static_cast<size_t>(i)];
+      acc.min = glm::min(acc.min, bin[i - 1].lo);
+      acc.max = glm::max(acc.max, bin[i - 1].hi);
+      count += bin[i - 1].count;
+      const size_t nRight = rightCount[i];
       if (count == 0 || nRight == 0) continue;
       const float cost = s.traversalCost + s.intersectionCost *
                                                (halfArea(acc) * static_cast<float>(count) +
-                                                rightArea[static_cast<size_t>(i)] * static_cast<float>(nRight)) /
+                                                rightArea[i] * static_cast<float>(nRight)) /
                                                nodeArea;
       if (cost < bestCost) {
         bestCost = cost;
@@ -100,9 +114,9 @@ size_t sahSplit(std::span<BuildPrim> prims, const Bounds3& bounds, const Bounds3
   if (n <= static_cast<size_t>(s.maxLeaf) && leafCost <= bestCost) return 0;
   if (bestAxis < 0) return equalCounts(prims, widestAxis(cb));
 
-  const float lo = cb.min[bestAxis], scale = static_cast<float>(bins) / (cb.max[bestAxis] - lo);
+  const float lo = cb.min[bestAxis], axisScale = scale[bestAxis];
   const auto it = std::partition(prims.begin(), prims.end(), [&](const BuildPrim& p) {
-    return std::min(bins - 1, static_cast<int>((p.centroid[bestAxis] - lo) * scale)) < bestBoundary;
+    return std::min(bins - 1, static_cast<int>((p.centroid[bestAxis] - lo) * axisScale)) < bestBoundary;
   });
   return static_cast<size_t>(it - prims.begin());
 }
