@@ -16,7 +16,7 @@ packages=(
   build-essential cmake ninja-build ccache pkg-config git python3 python3-jsonschema
   libglfw3-dev libimgui-dev libglm-dev libstb-dev libopenmesh-dev libtinyobjloader-dev
   nlohmann-json3-dev libcli11-dev libtbb-dev libgtest-dev libbenchmark-dev libembree-dev
-  unifdef xvfb xauth
+  unifdef xvfb xauth libgl1-mesa-dri fonts-dejavu-core
 )
 missing=()
 for p in "${packages[@]}"; do
@@ -46,6 +46,7 @@ case "$mode" in
   run)
     scene="$root/data/scenes/cornell_box.json"
     if [ -n "${DISPLAY:-}" ] && "$build/lightlab" --help 2>/dev/null | grep -q '^\s*gui'; then
+      cd "$root"  # the GUI lists the scenes under data/scenes
       exec "$build/lightlab" gui "$scene"
     fi
     out="$root/out/cornell_box.png"

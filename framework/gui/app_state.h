@@ -82,6 +82,7 @@ struct AppState {
   float contentScale = 1.0f;
   float appliedFontScale = 0.0f;
   bool fullscreen = false;
+  bool toggleFullscreenRequest = false;  // set by the F11 key callback
   int windowedPos[2] = {100, 100}, windowedSize[2] = {1280, 800};
   bool draggingWipe = false;
 

@@ -40,6 +40,24 @@ void onDrop(GLFWwindow* window, int count, const char** paths) {
   for (int i = 0; i < count; ++i) app->droppedFiles.emplace_back(paths[i]);
 }
 
+std::string timestampedName() {
+  const std::time_t now = std::time(nullptr);
+  char buf[64];
+  std::strftime(buf, sizeof buf, "lightlab_%Y%m%d_%H%M%S.png", std::localtime(&now));
+  return buf;
+}
+
+// F11 and F12 act on the key event itself: a press and release that arrive
+// within one frame (a quick tap, or xdotool) would be missed by polling.
+void onKey(GLFWwindow* window, int key, int scancode, int action, int mods) {
+  (void)scancode;
+  (void)mods;
+  auto* app = static_cast<AppState*>(glfwGetWindowUserPointer(window));
+  if (!app || action != GLFW_PRESS) return;
+  if (key == GLFW_KEY_F11) app->toggleFullscreenRequest = true;
+  if (key == GLFW_KEY_F12) app->screenshotRequest = timestampedName();
+}
+
 // Rebuilds the font atlas when the effective scale changed (between frames).
 void applyUiScale(AppState& app) {
   const float scale = std::clamp(app.uiScale, 0.5f, 4.0f) * app.contentScale;
@@ -63,12 +81,6 @@ void applyUiScale(AppState& app) {
   app.appliedFontScale = scale;
 }
 
-std::string timestampedName() {
-  const std::time_t now = std::time(nullptr);
-  char buf[64];
-  std::strftime(buf, sizeof buf, "lightlab_%Y%m%d_%H%M%S.png", std::localtime(&now));
-  return buf;
-}
 
 // One frame of work that is not drawing: files, scene loads, pane renderers.
 void updateApp(AppState& app) {
@@ -140,6 +152,7 @@ int runGui(const GuiOptions& options) {
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;  // the layout is fixed; presets hold the state worth keeping
+  glfwSetKeyCallback(window, onKey);  // before ImGui's backend, which chains to it
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   ImGui_ImplOpenGL3_Init("#version 330");
   ImGui_ImplOpenGL3_CreateDeviceObjects();  // before applyUiScale replaces the font texture
@@ -185,9 +198,9 @@ int runGui(const GuiOptions& options) {
       const float vx = panelW, vw = std::max(io.DisplaySize.x - panelW, 1.0f);
       drawViewport(app, vx, 0.0f, vw, io.DisplaySize.y);
       handleCameraInput(app, window, vx, 0.0f, vw, io.DisplaySize.y);
-      if (!io.WantCaptureKeyboard) {
-        if (ImGui::IsKeyPressed(GLFW_KEY_F11, false)) toggleFullscreen(app, window);
-        if (ImGui::IsKeyPressed(GLFW_KEY_F12, false)) app.screenshotRequest = timestampedName();
+      if (app.toggleFullscreenRequest) {
+        app.toggleFullscreenRequest = false;
+        toggleFullscreen(app, window);
       }
 
       // 4. Render and present.

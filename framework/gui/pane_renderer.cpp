@@ -1,6 +1,7 @@
 #include "gui/pane_renderer.h"
 
 #include <algorithm>
+#include <cmath>
 #include <exception>
 
 #include <nlohmann/json.hpp>
@@ -12,11 +13,26 @@
 namespace ll::gui {
 
 namespace {
-// A first pass slower than this gets a quick quarter-resolution preview first,
-// so dragging the camera stays fluid on heavy techniques.
-constexpr double kPreviewAbove = 0.15;  // seconds
-constexpr int kPreviewDivisor = 4;
+// A first pass expected to be slower than this gets a quick low-resolution
+// preview first, sized to take about kPreviewTarget, so opening a heavy scene
+// or dragging the camera shows something at once. A pass of unknown cost (a
+// new scene, technique or parameter) counts as slow.
+constexpr double kPreviewAbove = 0.15;   // seconds
+constexpr double kPreviewTarget = 0.05;  // seconds
+constexpr int kMaxPreviewDivisor = 16;
+
+// Resolution divisor for the preview of a pass expected to take `passSeconds` (< 0 = unknown).
+int previewDivisor(double passSeconds) {
+  if (passSeconds < 0.0) return 8;
+  const int d = static_cast<int>(std::ceil(std::sqrt(passSeconds / kPreviewTarget)));
+  return std::clamp(d, 2, kMaxPreviewDivisor);
+}
 }  // namespace
+
+double PaneSnapshot::elapsed() const {
+  if (phase != Phase::Rendering) return seconds;
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+}
 
 PaneRenderer::PaneRenderer() : worker_([this] { workerLoop(); }) {}
 
@@ -31,18 +47,22 @@ PaneRenderer::~PaneRenderer() {
   worker_.join();
 }
 
-void PaneRenderer::submit(RenderRequest request) {
+uint64_t PaneRenderer::submit(RenderRequest request) {
+  uint64_t id = 0;
   {
     std::lock_guard lock(mutex_);
     pending_ = std::move(request);
+    id = ++submitted_;
     if (running_) running_->cancel();
   }
   wake_.notify_all();
+  return id;
 }
 
 void PaneRenderer::stop() {
   std::lock_guard lock(mutex_);
   pending_.reset();
+  ++submitted_;  // whatever is running now is superseded
   if (running_) running_->cancel();
 }
 
@@ -58,6 +78,7 @@ bool PaneRenderer::finished() const {
 
 void PaneRenderer::publish(const PaneSnapshot& s) {
   std::lock_guard lock(mutex_);
+  if (s.request != submitted_) return;  // superseded: never show a stale view after a newer submit
   const uint64_t version = snapshot_.version + (s.image != snapshot_.image ? 1 : 0);
   snapshot_ = s;
   snapshot_.version = version;
@@ -66,6 +87,7 @@ void PaneRenderer::publish(const PaneSnapshot& s) {
 void PaneRenderer::workerLoop() {
   for (;;) {
     RenderRequest request;
+    uint64_t id = 0;
     {
       std::unique_lock lock(mutex_);
       busy_ = false;
@@ -73,12 +95,14 @@ void PaneRenderer::workerLoop() {
       if (quit_) return;
       request = std::move(*pending_);
       pending_.reset();
+      id = submitted_;
       busy_ = true;
     }
     try {
-      render(request);
+      render(request, id);
     } catch (const std::exception& e) {  // UserError from a technique, or anything else: shown, never fatal
       PaneSnapshot s = snapshot();
+      s.request = id;
       s.phase = PaneSnapshot::Phase::Failed;
       s.error = e.what();
       publish(s);
@@ -90,8 +114,9 @@ void PaneRenderer::workerLoop() {
   }
 }
 
-void PaneRenderer::render(const RenderRequest& request) {
+void PaneRenderer::render(const RenderRequest& request, uint64_t id) {
   PaneSnapshot s = snapshot();
+  s.request = id;
   s.error.clear();
   s.missingTasks.clear();
   s.passes = 0;
@@ -111,6 +136,13 @@ void PaneRenderer::render(const RenderRequest& request) {
   }
   s.buildSeconds = buildSeconds_;
   const TechniqueInfo& techInfo = findTechnique(request.technique);
+  // The cost of a pass is remembered per (scene, accelerator, technique, parameters, size).
+  const std::string costKey = key + "|" + techInfo.name + "|" + request.techniqueParams.toJson().dump() + "|" +
+                              std::to_string(request.settings.width) + "x" + std::to_string(request.settings.height);
+  if (costKey != costKey_) {
+    costKey_ = costKey;
+    lastPassSeconds_ = -1.0;
+  }
 
   // Runs one job, publishing after each pass; false if cancelled.
   const auto runJob = [&](const RenderSettings& settings, bool preview) {
@@ -122,11 +154,17 @@ void PaneRenderer::render(const RenderRequest& request) {
       running_ = &job;
     }
     s.phase = PaneSnapshot::Phase::Rendering;
-    s.preview = preview;
+    if (!preview) {
+      s.passes = 0;
+      s.totalPasses = settings.spp;  // the usual pass count, until the job says otherwise
+    }
+    s.started = std::chrono::steady_clock::now();
     publish(s);
     const Timer timer;
     job.run([&](int done, int total) {
       s.image = std::make_shared<const Image>(job.frame().resolve());
+      s.imageRequest = id;
+      s.preview = preview;
       s.passes = preview ? 0 : done;
       s.totalPasses = preview ? 0 : total;
       s.seconds = timer.seconds();
@@ -142,10 +180,12 @@ void PaneRenderer::render(const RenderRequest& request) {
     return !job.cancelled();
   };
 
-  if (lastPassSeconds_ > kPreviewAbove && request.settings.width >= 4 * kPreviewDivisor) {
+  const int divisor = previewDivisor(lastPassSeconds_);
+  if ((lastPassSeconds_ < 0.0 || lastPassSeconds_ > kPreviewAbove) && request.settings.width >= 8 * divisor &&
+      request.settings.height >= 8 * divisor) {
     RenderSettings preview = request.settings;
-    preview.width = std::max(1, preview.width / kPreviewDivisor);
-    preview.height = std::max(1, preview.height / kPreviewDivisor);
+    preview.width = std::max(1, preview.width / divisor);
+    preview.height = std::max(1, preview.height / divisor);
     preview.spp = 1;
     if (!runJob(preview, true)) return;
   }

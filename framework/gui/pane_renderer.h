@@ -6,6 +6,7 @@
 // on a render.
 #pragma once
 
+#include <chrono>
 #include <condition_variable>
 #include <cstdint>
 #include <map>
@@ -35,10 +36,14 @@ struct PaneSnapshot {
   enum class Phase { Idle, Building, Rendering, Done, Failed, Stopped };
   Phase phase = Phase::Idle;
   uint64_t version = 0;                 // increases with every published image
+  uint64_t request = 0;                 // the submit() this snapshot reports on
+  uint64_t imageRequest = 0;            // the submit() the image was rendered for
   std::shared_ptr<const Image> image;   // linear radiance, stub pixels striped magenta
   bool preview = false;                 // image is the quick low-resolution first look
   int passes = 0, totalPasses = 0;
-  double seconds = 0.0;                 // render time of the current request so far (excludes build)
+  double seconds = 0.0;                 // render time up to the last completed pass (excludes build)
+  std::chrono::steady_clock::time_point started;  // when the current job began, for a live clock
+  double elapsed() const;               // seconds since `started` while rendering, else `seconds`
   double buildSeconds = 0.0;            // accelerator build of the current scene
   RenderStats stats;                    // as of the last completed pass
   std::map<std::string, std::string> missingTasks;  // student task id -> what
@@ -52,8 +57,9 @@ class PaneRenderer {
   PaneRenderer(const PaneRenderer&) = delete;
   PaneRenderer& operator=(const PaneRenderer&) = delete;
 
-  // Cancels the current render and queues `request`; returns immediately.
-  void submit(RenderRequest request);
+  // Cancels the current render and queues `request`; returns immediately with
+  // the request's id. From then on only this request's results are published.
+  uint64_t submit(RenderRequest request);
   // Stops rendering; the last image stays.
   void stop();
   PaneSnapshot snapshot() const;
@@ -62,7 +68,7 @@ class PaneRenderer {
 
  private:
   void workerLoop();
-  void render(const RenderRequest& request);
+  void render(const RenderRequest& request, uint64_t id);
   void publish(const PaneSnapshot& s);
 
   mutable std::mutex mutex_;
@@ -71,13 +77,15 @@ class PaneRenderer {
   RenderJob* running_ = nullptr;  // guarded by mutex_, for cancel
   bool quit_ = false;
   bool busy_ = false;
+  uint64_t submitted_ = 0;  // id of the newest request (or stop)
   PaneSnapshot snapshot_;
 
   // Worker-only state: the accelerator cache and the last pass time.
   std::shared_ptr<const Accelerator> accel_;
   std::string accelKey_;
   double buildSeconds_ = 0.0;
-  double lastPassSeconds_ = 0.0;
+  double lastPassSeconds_ = -1.0;  // the first full pass of the last render; < 0 = unknown
+  std::string costKey_;
 
   std::thread worker_;  // last member: starts after everything above exists
 };

@@ -120,7 +120,7 @@ void layoutSection(AppState& app) {
 void statsTable(const PaneState& p) {
   const PaneSnapshot& s = p.shown;
   const double rays = static_cast<double>(s.stats.work.totalRays());
-  ImGui::Text("pass %d/%d   %.2f s   %.2f Mrays/s", s.passes, s.totalPasses, s.seconds,
+  ImGui::Text("pass %d/%d   %.2f s   %.2f Mrays/s", s.passes, s.totalPasses, s.elapsed(),
               s.seconds > 0 ? rays / s.seconds / 1e6 : 0.0);
   if (ImGui::BeginTable("rays", 2, ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp)) {
     for (int k = 0; k < kRayKindCount; ++k) {
@@ -201,6 +201,10 @@ void viewSection(AppState& app, GLFWwindow* window) {
   if (!ImGui::CollapsingHeader("View")) return;
   ImGui::SliderFloat("UI scale", &app.uiScale, 0.5f, 3.0f, "%.2f");
   ImGui::Text("monitor content scale %.2f", static_cast<double>(app.contentScale));
+  const float fps = ImGui::GetIO().Framerate;
+  ImGui::Text("UI %.1f ms per frame (%.0f fps)", static_cast<double>(1000.0f / std::max(fps, 1e-3f)),
+              static_cast<double>(fps));
+  helpMarker("The UI never waits for a render: panes render on worker threads and the UI only copies finished passes.");
   if (ImGui::Button(app.fullscreen ? "Windowed (F11)" : "Fullscreen (F11)")) toggleFullscreen(app, window);
   ImGui::SameLine();
   if (ImGui::Button("Screenshot (F12)")) app.screenshotRequest = "lightlab_screenshot.png";

@@ -119,5 +119,16 @@ TEST(ViewPreset, BadPresetsNameThePlaceAndTheAllowedValues) {
   EXPECT_TRUE(contains(e, "/nonexistent/preset.json")) << e;
 }
 
+TEST(ViewPreset, EveryBundledPresetLoadsAndNamesAnExistingScene) {
+  int count = 0;
+  for (const auto& entry : fs::directory_iterator(std::string(LIGHTLAB_DATA_DIR) + "/presets")) {
+    if (entry.path().extension() != ".json") continue;
+    const ViewPreset p = loadPreset(entry.path().string());
+    EXPECT_TRUE(fs::exists(p.scene)) << entry.path() << ": " << p.scene;
+    ++count;
+  }
+  EXPECT_GE(count, 3);
+}
+
 }  // namespace
 }  // namespace ll::gui

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -51,24 +52,31 @@ ImU32 srgbColor(Rgb linear) {
   return IM_COL32(c(linear.r), c(linear.g), c(linear.b), 255);
 }
 
-// Text lines in a dark box at (x, y); returns the box height.
 // Every box drawn over an image is recorded here (reset each frame) for the screenshot sidecar.
 std::vector<std::array<float, 4>>* gOverlays = nullptr;
 
+enum class Anchor { Top, Bottom };  // whether y is the box's top or bottom edge
+
+// Text lines, wrapped to maxWidth, in a filled box at (x, y); returns the box height.
 float captionBox(ImDrawList* dl, float x, float y, const std::vector<std::string>& lines, ImU32 bg,
-                 float maxWidth) {
+                 float maxWidth, Anchor anchor = Anchor::Top) {
   const float pad = 4.0f * ImGui::GetIO().FontGlobalScale;
-  const float lineH = ImGui::GetTextLineHeight();
-  float width = 0.0f;
-  for (const std::string& l : lines) width = std::max(width, ImGui::CalcTextSize(l.c_str()).x);
+  const float wrap = std::max(maxWidth - 2 * pad, 1.0f);
+  float width = 0.0f, height = 2 * pad;
+  for (const std::string& l : lines) {
+    const ImVec2 size = ImGui::CalcTextSize(l.c_str(), nullptr, false, wrap);
+    width = std::max(width, size.x);
+    height += size.y;
+  }
   width = std::min(width + 2 * pad, maxWidth);
-  const float height = lineH * static_cast<float>(lines.size()) + 2 * pad;
+  if (anchor == Anchor::Bottom) y -= height;
   dl->AddRectFilled(ImVec2(x, y), ImVec2(x + width, y + height), bg, 3.0f);
   if (gOverlays) gOverlays->push_back({x, y, width, height});
-  dl->PushClipRect(ImVec2(x, y), ImVec2(x + width, y + height), true);
-  for (size_t i = 0; i < lines.size(); ++i)
-    dl->AddText(ImVec2(x + pad, y + pad + lineH * static_cast<float>(i)), IM_COL32_WHITE, lines[i].c_str());
-  dl->PopClipRect();
+  float ty = y + pad;
+  for (const std::string& l : lines) {
+    dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(x + pad, ty), IM_COL32_WHITE, l.c_str(), nullptr, wrap);
+    ty += ImGui::CalcTextSize(l.c_str(), nullptr, false, wrap).y;
+  }
   return height;
 }
 
@@ -94,12 +102,12 @@ std::vector<std::string> paneCaption(const AppState& app, int index) {
     case PaneSnapshot::Phase::Rendering:
     case PaneSnapshot::Phase::Done: {
       if (s.preview) {
-        lines.emplace_back("preview (1/4 resolution)");
+        lines.emplace_back("low-resolution preview; pass 1 is rendering");
         break;
       }
       const double rays = static_cast<double>(s.stats.work.totalRays());
-      std::snprintf(buf, sizeof buf, "pass %d/%d  %.2f s  %s%s", s.passes, s.totalPasses, s.seconds,
-                    formatRate(s.seconds > 0 ? rays / s.seconds : 0.0).c_str(),
+      const std::string rate = s.passes > 0 && s.seconds > 0 ? "  " + formatRate(rays / s.seconds) : "";
+      std::snprintf(buf, sizeof buf, "pass %d/%d  %.2f s%s%s", s.passes, s.totalPasses, s.elapsed(), rate.c_str(),
                     s.phase == PaneSnapshot::Phase::Done ? "  done" : "");
       lines.emplace_back(buf);
       break;
@@ -131,10 +139,7 @@ void paneBanners(ImDrawList* dl, const PaneState& p, Rect r) {
   std::vector<std::string> lines;
   for (const auto& [id, what] : p.shown.missingTasks)
     lines.push_back("Task " + id + " not implemented: " + what + " (striped pixels use the stub)");
-  if (!lines.empty()) {
-    const float h = ImGui::GetTextLineHeight() * static_cast<float>(lines.size()) + 8.0f;
-    captionBox(dl, r.x, r.y + r.h - h, lines, IM_COL32(150, 20, 120, 230), r.w);
-  }
+  if (!lines.empty()) captionBox(dl, r.x, r.y + r.h, lines, IM_COL32(150, 20, 120, 230), r.w, Anchor::Bottom);
   if (p.shown.phase == PaneSnapshot::Phase::Failed) {
     const float h = ImGui::GetTextLineHeight() + 8.0f;
     captionBox(dl, r.x, r.y + r.h / 2 - h / 2, {"Error: " + p.shown.error}, IM_COL32(170, 30, 30, 240), r.w);
@@ -197,9 +202,30 @@ Rect compareArea(const AppState& app, Rect area) {
   return fitImage({area.x, area.y, area.w, area.h - legend}, w, h, 8.0f);
 }
 
+// The newest error of the last few seconds, over the top of the image area,
+// so a bad scene or preset is noticed even with the panel scrolled away.
+void errorToast(ImDrawList* dl, const AppState& app, Rect area) {
+  constexpr auto kShowFor = std::chrono::seconds(10);
+  for (auto it = app.messages.rbegin(); it != app.messages.rend(); ++it) {
+    if (std::chrono::steady_clock::now() - it->when > kShowFor) return;
+    if (!it->error) continue;
+    captionBox(dl, area.x + 8.0f, area.y + area.h - 8.0f, {it->text}, IM_COL32(170, 30, 30, 240), area.w - 16.0f,
+               Anchor::Bottom);
+    return;
+  }
+}
+
+void drawViewportContent(AppState& app, float x, float y, float w, float h);  // below
+
 }  // namespace
 
 void drawViewport(AppState& app, float x, float y, float w, float h) {
+  drawViewportContent(app, x, y, w, h);
+  errorToast(ImGui::GetBackgroundDrawList(), app, {x, y, w, h});
+}
+
+namespace {
+void drawViewportContent(AppState& app, float x, float y, float w, float h) {
   ImDrawList* dl = ImGui::GetBackgroundDrawList();
   const Rect area{x, y, w, h};
   dl->AddRectFilled(ImVec2(x, y), ImVec2(x + w, y + h), IM_COL32(28, 28, 32, 255));
@@ -268,6 +294,8 @@ void drawViewport(AppState& app, float x, float y, float w, float h) {
   captionBox(dl, r.x, r.y, lines, IM_COL32(0, 0, 0, 170), r.w);
 }
 
+}  // namespace
+
 void handleCameraInput(AppState& app, GLFWwindow* window, float x, float y, float w, float h) {
   ImGuiIO& io = ImGui::GetIO();
   const Rect area{x, y, w, h};
@@ -288,7 +316,9 @@ void handleCameraInput(AppState& app, GLFWwindow* window, float x, float y, floa
       }
     }
     const float cellH = std::max(app.paneCount == 4 ? h / 2 : h, 1.0f);
-    if (dragging && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) {
+    // The frame a drag starts contributes no motion: the pointer may have jumped there.
+    const bool moving = dragging && !clicked && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f);
+    if (moving) {
       if (app.draggingWipe) {
         const auto& cr = app.compareRect;
         if (cr[2] > 0) app.compare.wipe = std::clamp((io.MousePos.x - cr[0]) / cr[2], 0.0f, 1.0f);
