@@ -16,7 +16,7 @@ packages=(
   build-essential cmake ninja-build ccache pkg-config git python3 python3-jsonschema
   libglfw3-dev libimgui-dev libglm-dev libstb-dev libopenmesh-dev libtinyobjloader-dev
   nlohmann-json3-dev libcli11-dev libtbb-dev libgtest-dev libbenchmark-dev libembree-dev
-  unifdef xvfb xauth libgl1-mesa-dri fonts-dejavu-core
+  unifdef xvfb xauth xdotool libgl1-mesa-dri fonts-dejavu-core
 )
 missing=()
 for p in "${packages[@]}"; do

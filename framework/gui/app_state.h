@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <future>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -96,6 +97,7 @@ struct AppState {
   std::array<std::array<float, 4>, kMaxPanes> paneRects{};
   std::array<float, 4> compareRect{};
   std::vector<std::array<float, 4>> overlayRects;  // captions and banners drawn over the images
+  std::map<std::string, std::array<float, 4>> widgetRects;  // named controls of the panel, for scripted UI tests
 };
 
 }  // namespace ll::gui

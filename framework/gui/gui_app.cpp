@@ -40,11 +40,14 @@ void onDrop(GLFWwindow* window, int count, const char** paths) {
   for (int i = 0; i < count; ++i) app->droppedFiles.emplace_back(paths[i]);
 }
 
+// lightlab_YYYYMMDD_HHMMSS.png in the working directory, or _2, _3... if taken.
 std::string timestampedName() {
   const std::time_t now = std::time(nullptr);
   char buf[64];
-  std::strftime(buf, sizeof buf, "lightlab_%Y%m%d_%H%M%S.png", std::localtime(&now));
-  return buf;
+  std::strftime(buf, sizeof buf, "lightlab_%Y%m%d_%H%M%S", std::localtime(&now));
+  std::string name = std::string(buf) + ".png";
+  for (int n = 2; fs::exists(name); ++n) name = std::string(buf) + "_" + std::to_string(n) + ".png";
+  return name;
 }
 
 // F11 and F12 act on the key event itself: a press and release that arrive

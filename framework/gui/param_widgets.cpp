@@ -25,7 +25,7 @@ ImGuiSliderFlags sliderFlags(const ParamDecl& d) {
 
 }  // namespace
 
-bool paramWidgets(ParamSet& params) {
+bool paramWidgets(ParamSet& params, const std::function<void(const std::string&)>& drawn) {
   bool changed = false;
   for (const ParamDecl& d : params.decls()) {
     ImGui::PushID(d.name.c_str());
@@ -73,6 +73,7 @@ bool paramWidgets(ParamSet& params) {
       }
     }
     tooltip(d);
+    if (drawn) drawn(d.name);
     ImGui::PopID();
   }
   return changed;

@@ -48,7 +48,9 @@ std::string saveScreenshotSidecar(const AppState& app, const std::string& path, 
             {"total_passes", p.shown.totalPasses},
             {"rect", rect(app.paneRects[static_cast<size_t>(i)])},
             {"missing_tasks", p.shown.missingTasks},
-            {"error", p.shown.error}};
+            {"error", p.shown.error},
+            {"params", p.techniqueParams.toJson()},
+            {"accel_params", p.accelParams.toJson()}};
     if (p.shown.image) pj["image_size"] = {p.shown.image->width(), p.shown.image->height()};
     j["panes"].push_back(pj);
   }
@@ -58,6 +60,11 @@ std::string saveScreenshotSidecar(const AppState& app, const std::string& path, 
                   {"wipe", app.compare.wipe},
                   {"rect", rect(app.compareRect)},
                   {"diff_max", app.diff.usedMax}};
+  const auto vec = [](const Vec3& v) { return json::array({v.x, v.y, v.z}); };
+  j["camera"] = {{"eye", vec(app.camera.eye)}, {"target", vec(app.camera.target)}, {"up", vec(app.camera.up)},
+                 {"fov_y_deg", app.camera.fovYDeg}};
+  j["widgets"] = json::object();
+  for (const auto& [name, r] : app.widgetRects) j["widgets"][name] = rect(r);
   j["overlays"] = json::array();
   for (const auto& r : app.overlayRects) j["overlays"].push_back(rect(r));
   j["messages"] = json::array();

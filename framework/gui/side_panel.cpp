@@ -18,6 +18,12 @@ namespace ll::gui {
 
 namespace {
 
+// Remembers where the last widget was drawn, under `name` (window coordinates).
+void recordWidget(AppState& app, const std::string& name) {
+  const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+  app.widgetRects[name] = {a.x, a.y, b.x - a.x, b.y - a.y};
+}
+
 void helpMarker(const char* text) {
   ImGui::SameLine();
   ImGui::TextDisabled("(?)");
@@ -39,8 +45,10 @@ void sceneSection(AppState& app) {
   }
   helpMarker("Scenes found in data/scenes and the build's generated scenes.\nYou can also drop a scene or preset file on the window.");
   ImGui::InputText("path", app.pathInput, sizeof app.pathInput);
+  recordWidget(app, "scene.path");
   ImGui::SameLine();
   if (ImGui::Button("Open")) openScene(app, app.pathInput);
+  recordWidget(app, "scene.open");
   if (ImGui::Button("Reload")) openScene(app, app.scenePath, true);
   ImGui::SameLine();
   ImGui::Checkbox("reload on change", &app.autoReload);
@@ -60,6 +68,7 @@ void cameraSection(AppState& app) {
     app.cameraChanged = true;
   }
   if (ImGui::Button("Frame scene")) frameScene(app);
+  recordWidget(app, "camera.frame");
   ImGui::SameLine();
   if (ImGui::Button("Reset")) resetCamera(app);
   helpMarker("Over the image: left drag orbits, right/middle drag pans, wheel zooms.\nW/A/S/D fly, Q/E down/up, Shift = faster.");
@@ -77,10 +86,13 @@ void layoutSection(AppState& app) {
   }
   int mode = static_cast<int>(app.compare.mode);
   ImGui::RadioButton("side by side", &mode, 0);
+  recordWidget(app, "compare.side-by-side");
   ImGui::SameLine();
   ImGui::RadioButton("wipe", &mode, 1);
+  recordWidget(app, "compare.wipe");
   ImGui::SameLine();
   ImGui::RadioButton("difference", &mode, 2);
+  recordWidget(app, "compare.difference");
   app.compare.mode = static_cast<CompareMode>(mode);
   const char* letters[] = {"A", "B", "C", "D"};
   if (app.compare.mode != CompareMode::SideBySide) {
@@ -164,7 +176,10 @@ void paneSection(AppState& app, int i) {
   }
   if (ImGui::SliderInt("passes (spp)", &p.spp, 1, 1024, "%d", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp))
     p.dirty = true;
-  if (paramWidgets(p.techniqueParams)) p.dirty = true;
+  if (paramWidgets(p.techniqueParams, [&](const std::string& name) {
+        recordWidget(app, std::string(1, paneLetter(i)) + ".param." + name);
+      }))
+    p.dirty = true;
   if (!p.accelParams.decls().empty() && ImGui::TreeNode("accelerator parameters")) {
     if (paramWidgets(p.accelParams)) p.dirty = true;
     ImGui::TreePop();
