@@ -49,7 +49,8 @@ constexpr int kMaxBins = 64;
 // Hierarchies", 2007) over all three axes.
 size_t sahSplit(std::span<BuildPrim> prims, const Bounds3& bounds, const Bounds3& cb, const SplitSettings& s) {
   const size_t n = prims.size();
-  const int bins = std::clamp(s.bins, 2, kMaxBins);
+  // Small nodes need fewer bins: n primitives fill at most n of them.
+  const int bins = std::clamp(std::min(s.bins, static_cast<int>(std::min<size_t>(n, kMaxBins)) + 2), 2, kMaxBins);
   const float nodeArea = halfArea(bounds);
   if (!(nodeArea > 0.0f)) return n <= static_cast<size_t>(s.maxLeaf) ? 0 : equalCounts(prims, widestAxis(cb));
 

@@ -2,7 +2,8 @@
 // thread unless the name says t2) for coherent (camera) and incoherent
 // (random origin in the scene's box, random direction) rays, and build time,
 // for every BVH split method and Embree in the same run, on the bunny
-// (3.7k, 59k, 235k triangles) and the Cornell box with the 59k bunny.
+// (3.7k, 59k, 235k triangles), the Cornell box with the 59k bunny and a
+// soup of 1M random triangles.
 //
 //   build-dir/tests/bench/lightlab_bench --benchmark_filter=Accel
 //     --benchmark_repetitions=5 --benchmark_enable_random_interleaving=true
@@ -31,7 +32,7 @@ using namespace ll;
 
 struct BenchScene {
   const char* name;
-  std::string path;
+  std::string path;  // empty: the random soup
 };
 
 const std::vector<BenchScene>& benchScenes() {
@@ -40,8 +41,30 @@ const std::vector<BenchScene>& benchScenes() {
       {"bunny59k", std::string(LIGHTLAB_BUILD_DATA_DIR) + "/scenes/bunny_59k.json"},
       {"bunny235k", std::string(LIGHTLAB_BUILD_DATA_DIR) + "/scenes/bunny_235k.json"},
       {"cornell59k", std::string(LIGHTLAB_BUILD_DATA_DIR) + "/scenes/cornell_bunny_59k.json"},
+      {"soup1M", ""},
   };
   return kScenes;
+}
+
+// One million random triangles (edges about 1/50) in the unit cube, seen
+// from a camera in front of it.
+Scene randomSoup() {
+  Scene s;
+  std::mt19937 rng(99);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f), d(-0.02f, 0.02f);
+  constexpr uint32_t kTriangles = 1000000;
+  Geometry& g = s.geometry;
+  g.positions.reserve(3 * kTriangles);
+  for (uint32_t i = 0; i < kTriangles; ++i) {
+    const Vec3 c(u(rng), u(rng), u(rng));
+    for (int k = 0; k < 3; ++k) g.positions.push_back(c + Vec3(d(rng), d(rng), d(rng)));
+    g.triangles.emplace_back(3 * i, 3 * i + 1, 3 * i + 2);
+    g.triangleObject.push_back(0);
+  }
+  s.camera.eye = Vec3(0.5f, 0.5f, -1.5f);
+  s.camera.target = Vec3(0.5f);
+  s.camera.fovYDeg = 40.0f;
+  return s;
 }
 
 struct BenchAccel {
@@ -69,7 +92,7 @@ const std::vector<BenchAccel>& benchAccels() {
 const Scene& scene(const BenchScene& s) {
   static std::map<std::string, std::unique_ptr<Scene>> cache;
   auto& slot = cache[s.name];
-  if (!slot) slot = std::make_unique<Scene>(loadScene(s.path));
+  if (!slot) slot = std::make_unique<Scene>(s.path.empty() ? randomSoup() : loadScene(s.path));
   return *slot;
 }
 
