@@ -492,6 +492,8 @@ TEST(A4_Bvh, NodesVisitedGrowLogarithmically) {
   for (const char* split : {"median", "equal-counts", "sah"}) {
     const auto [nodesSmall, primsSmall] = perRay(small, split);
     const auto [nodesLarge, primsLarge] = perRay(large, split);
+    std::printf("[ %s ] per ray: %.1f -> %.1f nodes, %.1f -> %.1f primitives\n", split, nodesSmall, nodesLarge,
+                primsSmall, primsLarge);
     // log(147k) / log(2.3k) = 1.5; linear growth would be 64, square-root growth 8.
     EXPECT_LT(nodesLarge / nodesSmall, 2.5) << split << ": " << nodesSmall << " -> " << nodesLarge << " nodes/ray";
     EXPECT_LT(primsLarge / primsSmall, 2.5) << split << ": " << primsSmall << " -> " << primsLarge << " prims/ray";
