@@ -118,7 +118,7 @@ class EmbreeAccelerator final : public Accelerator {
     rtcInitIntersectContext(&context);
     RTCRay r = toRtcRay(ray);
     rtcOccluded1(scene_, &context, &r);
-    return r.tfar < 0.0f && r.tfar == -kInfinity;  // Embree marks an occluded ray with tfar = -inf
+    return r.tfar == -kInfinity;  // Embree marks an occluded ray with tfar = -inf
   }
 
   AcceleratorStats stats() const override {

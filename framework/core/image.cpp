@@ -1,6 +1,7 @@
 #include "core/image.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -30,6 +31,17 @@ float linearToSrgb(float v) {
 
 float srgbToLinear(float v) {
   return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
+}
+
+uint8_t linearToSrgb8(float v) {
+  // thresholds[k]: the smallest linear value whose code is k + 1 (the inverse at code k + 0.5).
+  static const std::array<float, 255> thresholds = [] {
+    std::array<float, 255> t{};
+    for (int k = 0; k < 255; ++k) t[static_cast<size_t>(k)] = srgbToLinear((static_cast<float>(k) + 0.5f) / 255.0f);
+    return t;
+  }();
+  if (!(v > 0.0f)) return 0;  // also NaN
+  return static_cast<uint8_t>(std::upper_bound(thresholds.begin(), thresholds.end(), v) - thresholds.begin());
 }
 
 namespace {
@@ -93,7 +105,7 @@ void saveImage(const Image& image, const std::string& path, ToneMap tone) {
   for (size_t i = 0; i < image.pixelCount(); ++i)
     for (int c = 0; c < 3; ++c)
       bytes[3 * i + c] =
-          static_cast<unsigned char>(std::lround(255.0f * linearToSrgb(scale * image.pixels()[i][c])));
+          linearToSrgb8(scale * image.pixels()[i][c]);
   const int ok = ext == ".png" ? stbi_write_png(path.c_str(), w, h, 3, bytes.data(), 3 * w)
                                : stbi_write_jpg(path.c_str(), w, h, 3, bytes.data(), 95);
   if (!ok) throwUserError(path + ": cannot write image (does the folder exist?)");

@@ -3,6 +3,7 @@
 // and PFM (.pfm, 32-bit float).
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,9 @@ class Image {
 // sRGB transfer function on one linear channel in [0,1] and back.
 float linearToSrgb(float linear);
 float srgbToLinear(float encoded);
+// round(255 * linearToSrgb(linear)) without a pow: a binary search over the
+// 255 linear thresholds between codes (fast enough for live display). NaN -> 0.
+uint8_t linearToSrgb8(float linear);
 
 // Options for writing 8-bit files: linear * 2^exposure, then sRGB-encoded.
 struct ToneMap {

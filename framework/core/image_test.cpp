@@ -319,3 +319,25 @@ TEST(Image, LoadingGarbageNamesPathAndFormats) {
 
 }  // namespace
 }  // namespace ll
+
+namespace ll {
+namespace {
+
+TEST(Srgb8, TableEncoderMatchesTheFormulaEverywhere) {
+  // Dense sweep over [0, 1] plus out-of-range and non-finite inputs.
+  int mismatches = 0;
+  for (int i = 0; i <= 1000000; ++i) {
+    const float v = static_cast<float>(i) / 1000000.0f;
+    const float scaled = 255.0f * linearToSrgb(v);
+    const bool nearTie = std::abs(scaled - std::floor(scaled) - 0.5f) < 1e-3f;  // may round either way
+    if (linearToSrgb8(v) != std::lround(scaled) && !nearTie) ++mismatches;
+  }
+  EXPECT_EQ(mismatches, 0);
+  EXPECT_EQ(linearToSrgb8(-1.0f), 0);
+  EXPECT_EQ(linearToSrgb8(2.0f), 255);
+  EXPECT_EQ(linearToSrgb8(std::numeric_limits<float>::infinity()), 255);
+  EXPECT_EQ(linearToSrgb8(std::nanf("")), 0);
+}
+
+}  // namespace
+}  // namespace ll

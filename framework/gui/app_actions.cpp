@@ -296,25 +296,67 @@ void submitPanes(AppState& app) {
 
 void refreshPanes(AppState& app) {
   for (PaneState& pane : app.panes) pane.shown = pane.renderer->snapshot();
+  BackgroundWorker& bg = *app.background;
+
+  // Display bytes of every new image (or after an exposure change).
+  for (int i = 0; i < kMaxPanes; ++i) {
+    PaneState& pane = app.panes[static_cast<size_t>(i)];
+    if (!pane.shown.image || (pane.encodedVersion == pane.shown.version && pane.encodedExposure == app.exposure))
+      continue;
+    pane.encodedVersion = pane.shown.version;
+    pane.encodedExposure = app.exposure;
+    bg.post("encode " + std::to_string(i), [image = pane.shown.image, mail = pane.display, e = app.exposure] {
+      mail->put(encodeForDisplay(*image, e));
+    });
+  }
+
+  // Errors against the reference pane.
   const int ref = app.compare.reference;
   for (int i = 0; i < kMaxPanes; ++i) {
     PaneState& pane = app.panes[static_cast<size_t>(i)];
-    if (ref < 0 || ref >= kMaxPanes || i == ref) {
+    if (auto e = pane.errorMail->take()) {
+      pane.error = *e;
+      pane.hasError = true;
+    }
+    const PaneSnapshot* refShot = ref >= 0 && ref < kMaxPanes && i != ref ? &app.panes[static_cast<size_t>(ref)].shown : nullptr;
+    const bool comparable = refShot && pane.shown.image && refShot->image && !pane.shown.preview && !refShot->preview &&
+                            pane.shown.image->width() == refShot->image->width() &&
+                            pane.shown.image->height() == refShot->image->height();
+    if (!comparable) {
       pane.hasError = false;
+      pane.errorVersions[0] = pane.errorVersions[1] = 0;
       continue;
     }
-    const PaneSnapshot& refShot = app.panes[static_cast<size_t>(ref)].shown;
-    if (!pane.shown.image || !refShot.image || pane.shown.preview || refShot.preview ||
-        pane.shown.image->width() != refShot.image->width() || pane.shown.image->height() != refShot.image->height()) {
-      pane.hasError = false;
-      continue;
-    }
-    if (pane.hasError && pane.errorVersions[0] == pane.shown.version && pane.errorVersions[1] == refShot.version) continue;
-    pane.error = compareImages(*pane.shown.image, *refShot.image);
-    pane.hasError = true;
+    if (pane.errorVersions[0] == pane.shown.version && pane.errorVersions[1] == refShot->version) continue;
     pane.errorVersions[0] = pane.shown.version;
-    pane.errorVersions[1] = refShot.version;
+    pane.errorVersions[1] = refShot->version;
+    bg.post("error " + std::to_string(i), [a = pane.shown.image, b = refShot->image, mail = pane.errorMail] {
+      mail->put(compareImages(*a, *b));
+    });
   }
+
+  // The difference heatmap of A against B.
+  DiffState& d = app.diff;
+  if (app.compare.mode != CompareMode::Difference) return;
+  const int a = app.compare.paneA, b = app.compare.paneB;
+  const PaneSnapshot& sa = app.panes[static_cast<size_t>(a)].shown;
+  const PaneSnapshot& sb = app.panes[static_cast<size_t>(b)].shown;
+  if (!sa.image || !sb.image || sa.image->width() != sb.image->width() || sa.image->height() != sb.image->height())
+    return;
+  if (d.panes[0] == a && d.panes[1] == b && d.versions[0] == sa.version && d.versions[1] == sb.version &&
+      d.mode == app.compare.diff && d.requestedMax == app.compare.diffMax)
+    return;
+  d.panes[0] = a;
+  d.panes[1] = b;
+  d.versions[0] = sa.version;
+  d.versions[1] = sb.version;
+  d.mode = app.compare.diff;
+  d.requestedMax = app.compare.diffMax;
+  bg.post("diff", [ia = sa.image, ib = sb.image, mode = d.mode, max = d.requestedMax, mail = d.mail] {
+    DiffState::Result r;
+    r.image = encodeForDisplay(differenceHeatmap(*ia, *ib, mode, max, &r.usedMax), 0.0f);
+    mail->put(std::move(r));
+  });
 }
 
 bool paneActive(const AppState& app, int pane) {

@@ -53,8 +53,9 @@ RenderSettings renderSettings(const AppState& app, const PaneState& pane);
 // Submits changed panes to their renderers (all of them after a camera or
 // scene change) and stops hidden ones. Call once per frame.
 void submitPanes(AppState& app);
-// Copies each visible pane's snapshot and updates errors against the
-// reference pane. Call once per frame.
+// Copies each pane's snapshot and asks the background worker for what
+// changed: display bytes, errors against the reference pane, the difference
+// heatmap. Collects finished errors. Call once per frame.
 void refreshPanes(AppState& app);
 // A pane renders when it is shown or used by the compare mode or as the reference.
 bool paneActive(const AppState& app, int pane);

@@ -28,7 +28,11 @@ void waitPanes(AppState& app) {
   while (std::chrono::steady_clock::now() < deadline) {
     submitPanes(app);
     refreshPanes(app);
-    if (allPanesFinished(app)) return;
+    if (allPanesFinished(app)) {
+      app.background->drain();
+      refreshPanes(app);  // collects the errors computed in the background
+      return;
+    }
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
   FAIL() << "panes did not finish";

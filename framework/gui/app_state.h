@@ -4,6 +4,7 @@
 // app_actions.h holds the operations that change it.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cstdint>
@@ -15,6 +16,8 @@
 #include <vector>
 
 #include "core/params.h"
+#include "gui/background_worker.h"
+#include "gui/display_image.h"
 #include "gui/gl_texture.h"
 #include "gui/pane_renderer.h"
 #include "gui/view_preset.h"
@@ -33,28 +36,53 @@ struct PaneState {
 
   PaneSnapshot shown;  // copied from the renderer once per UI frame
   GlTexture texture;
-  uint64_t uploadedVersion = 0;
-  float uploadedExposure = 0.0f;
-  // Error against the reference pane, recomputed when either image changes.
+  // The sRGB bytes of `shown.image`, encoded on the background worker.
+  std::shared_ptr<Mailbox<DisplayImage>> display = std::make_shared<Mailbox<DisplayImage>>();
+  uint64_t encodedVersion = 0;
+  float encodedExposure = 0.0f;
+  // Error against the reference pane, recomputed (in the background) when either image changes.
   bool hasError = false;
   ImageError error;
+  std::shared_ptr<Mailbox<ImageError>> errorMail = std::make_shared<Mailbox<ImageError>>();
   uint64_t errorVersions[2] = {0, 0};
 };
 
 struct DiffState {  // the difference heatmap of pane A against pane B
+  struct Result {
+    DisplayImage image;
+    float usedMax = 0.0f;
+  };
   GlTexture texture;
+  std::shared_ptr<Mailbox<Result>> mail = std::make_shared<Mailbox<Result>>();
+  // The inputs of the last heatmap requested, to request a new one only on change.
   uint64_t versions[2] = {0, 0};
   int panes[2] = {-1, -1};
   DiffMode mode = DiffMode::Absolute;
   float requestedMax = -1.0f;
-  float usedMax = 0.0f;
-  bool valid = false;
+  float usedMax = 0.0f;  // scale of the heatmap on screen
+  bool valid = false;    // a heatmap is on screen
 };
 
 struct Message {
   std::string text;
   bool error = true;
   std::chrono::steady_clock::time_point when;
+};
+
+// How long the UI thread worked per frame (not counting the wait for events):
+// the proof that no frame waits on a render.
+// The first frame (font atlas, first layout) is kept apart as start-up.
+struct FrameTimes {
+  int frames = 0;
+  double firstSeconds = 0.0, sumSeconds = 0.0, maxSeconds = 0.0;
+  void add(double seconds) {
+    if (++frames == 1) {
+      firstSeconds = seconds;
+      return;
+    }
+    sumSeconds += seconds;
+    maxSeconds = std::max(maxSeconds, seconds);
+  }
 };
 
 struct AppState {
@@ -82,6 +110,7 @@ struct AppState {
   float uiScale = 1.0f;   // user's scale, times the monitor's content scale
   float contentScale = 1.0f;
   float appliedFontScale = 0.0f;
+  FrameTimes uiFrameWork;
   bool fullscreen = false;
   bool toggleFullscreenRequest = false;  // set by the F11 key callback
   int windowedPos[2] = {100, 100}, windowedSize[2] = {1280, 800};
@@ -98,6 +127,9 @@ struct AppState {
   std::array<float, 4> compareRect{};
   std::vector<std::array<float, 4>> overlayRects;  // captions and banners drawn over the images
   std::map<std::string, std::array<float, 4>> widgetRects;  // named controls of the panel, for scripted UI tests
+
+  // Last member: destroyed (joined) first, before anything its jobs use.
+  std::unique_ptr<BackgroundWorker> background = std::make_unique<BackgroundWorker>();
 };
 
 }  // namespace ll::gui

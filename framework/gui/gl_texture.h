@@ -1,11 +1,10 @@
-// An OpenGL texture holding an Image for display: linear radiance is exposed
-// (2^stops), sRGB-encoded to 8 bits per channel and uploaded as RGBA8.
-// Requires a current GL context on the calling thread.
+// An OpenGL texture showing a DisplayImage (8-bit sRGB RGBA). Requires a
+// current GL context on the calling thread.
 #pragma once
 
 #include <cstdint>
 
-#include "core/image.h"
+#include "gui/display_image.h"
 
 namespace ll::gui {
 
@@ -16,7 +15,7 @@ class GlTexture {
   GlTexture(const GlTexture&) = delete;
   GlTexture& operator=(const GlTexture&) = delete;
 
-  void upload(const Image& image, float exposureStops);
+  void upload(const DisplayImage& image);
   bool valid() const { return id_ != 0; }
   int width() const { return width_; }
   int height() const { return height_; }

@@ -186,6 +186,7 @@ int runGui(const GuiOptions& options) {
     while (!glfwWindowShouldClose(window)) {
       // 1. Events. Waiting (at most 1/30 s) instead of spinning leaves the cores to the renderers.
       glfwWaitEventsTimeout(1.0 / 30.0);
+      const auto frameStart = std::chrono::steady_clock::now();
       applyUiScale(app);
       updateApp(app);
 
@@ -215,6 +216,7 @@ int runGui(const GuiOptions& options) {
       glClear(GL_COLOR_BUFFER_BIT);
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
       ++frame;
+      app.uiFrameWork.add(std::chrono::duration<double>(std::chrono::steady_clock::now() - frameStart).count());
       if (!app.screenshotRequest.empty()) {
         takeScreenshot(app, window, app.screenshotRequest);
         app.screenshotRequest.clear();
@@ -224,7 +226,9 @@ int runGui(const GuiOptions& options) {
         const bool timedOut = elapsed > options.screenshotTimeout;
         // Two frames after everything finished, so the last images are uploaded and drawn.
         static int settled = 0;
-        settled = allPanesFinished(app) ? settled + 1 : 0;
+        const bool finished = allPanesFinished(app);
+        if (finished) app.background->drain();  // display bytes and heatmap ready for the next frames
+        settled = finished ? settled + 1 : 0;
         if (settled >= 2 || timedOut) {
           takeScreenshot(app, window, options.screenshot);
           if (timedOut) {

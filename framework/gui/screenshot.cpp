@@ -63,6 +63,11 @@ std::string saveScreenshotSidecar(const AppState& app, const std::string& path, 
   const auto vec = [](const Vec3& v) { return json::array({v.x, v.y, v.z}); };
   j["camera"] = {{"eye", vec(app.camera.eye)}, {"target", vec(app.camera.target)}, {"up", vec(app.camera.up)},
                  {"fov_y_deg", app.camera.fovYDeg}};
+  const FrameTimes& ft = app.uiFrameWork;
+  j["ui_frames"] = {{"count", ft.frames},
+                    {"first_frame_ms", 1e3 * ft.firstSeconds},
+                    {"mean_work_ms", ft.frames > 1 ? 1e3 * ft.sumSeconds / (ft.frames - 1) : 0.0},
+                    {"max_work_ms", 1e3 * ft.maxSeconds}};
   j["widgets"] = json::object();
   for (const auto& [name, r] : app.widgetRects) j["widgets"][name] = rect(r);
   j["overlays"] = json::array();

@@ -219,6 +219,10 @@ void viewSection(AppState& app, GLFWwindow* window) {
   const float fps = ImGui::GetIO().Framerate;
   ImGui::Text("UI %.1f ms per frame (%.0f fps)", static_cast<double>(1000.0f / std::max(fps, 1e-3f)),
               static_cast<double>(fps));
+  const FrameTimes& ft = app.uiFrameWork;
+  if (ft.frames > 1)
+    ImGui::Text("UI work per frame: mean %.2f ms, max %.1f ms", 1e3 * ft.sumSeconds / (ft.frames - 1),
+                1e3 * ft.maxSeconds);
   helpMarker("The UI never waits for a render: panes render on worker threads and the UI only copies finished passes.");
   if (ImGui::Button(app.fullscreen ? "Windowed (F11)" : "Fullscreen (F11)")) toggleFullscreen(app, window);
   ImGui::SameLine();

@@ -146,12 +146,15 @@ void paneBanners(ImDrawList* dl, const PaneState& p, Rect r) {
   }
 }
 
-void uploadIfChanged(PaneState& p, float exposure) {
-  if (!p.shown.image) return;
-  if (p.texture.valid() && p.uploadedVersion == p.shown.version && p.uploadedExposure == exposure) return;
-  p.texture.upload(*p.shown.image, exposure);
-  p.uploadedVersion = p.shown.version;
-  p.uploadedExposure = exposure;
+// Uploads bytes the background worker finished since the last frame.
+void uploadFinished(AppState& app) {
+  for (PaneState& p : app.panes)
+    if (auto d = p.display->take()) p.texture.upload(*d);
+  if (auto r = app.diff.mail->take()) {
+    app.diff.texture.upload(r->image);
+    app.diff.usedMax = r->usedMax;
+    app.diff.valid = true;
+  }
 }
 
 void drawLegend(ImDrawList* dl, Rect r, const DiffState& diff) {
@@ -169,30 +172,6 @@ void drawLegend(ImDrawList* dl, Rect r, const DiffState& diff) {
   dl->AddText(ImVec2(r.x + r.w / 2 - ImGui::CalcTextSize(buf).x / 2, ty), IM_COL32_WHITE, buf);
   std::snprintf(buf, sizeof buf, "%.3g%s", static_cast<double>(diff.usedMax), diff.requestedMax <= 0 ? " (auto, 99th pct)" : "");
   dl->AddText(ImVec2(r.x + r.w - ImGui::CalcTextSize(buf).x, ty), IM_COL32_WHITE, buf);
-}
-
-void updateDiff(AppState& app) {
-  DiffState& d = app.diff;
-  const int a = app.compare.paneA, b = app.compare.paneB;
-  const PaneSnapshot& sa = app.panes[static_cast<size_t>(a)].shown;
-  const PaneSnapshot& sb = app.panes[static_cast<size_t>(b)].shown;
-  if (!sa.image || !sb.image || sa.image->width() != sb.image->width() ||
-      sa.image->height() != sb.image->height()) {
-    d.valid = false;
-    return;
-  }
-  if (d.valid && d.panes[0] == a && d.panes[1] == b && d.versions[0] == sa.version && d.versions[1] == sb.version &&
-      d.mode == app.compare.diff && d.requestedMax == app.compare.diffMax)
-    return;
-  const Image heat = differenceHeatmap(*sa.image, *sb.image, app.compare.diff, app.compare.diffMax, &d.usedMax);
-  d.texture.upload(heat, 0.0f);
-  d.panes[0] = a;
-  d.panes[1] = b;
-  d.versions[0] = sa.version;
-  d.versions[1] = sb.version;
-  d.mode = app.compare.diff;
-  d.requestedMax = app.compare.diffMax;
-  d.valid = true;
 }
 
 Rect compareArea(const AppState& app, Rect area) {
@@ -233,7 +212,7 @@ void drawViewportContent(AppState& app, float x, float y, float w, float h) {
   app.overlayRects.clear();
   gOverlays = &app.overlayRects;
   app.compareRect = {0, 0, 0, 0};
-  for (int i = 0; i < kMaxPanes; ++i) uploadIfChanged(app.panes[static_cast<size_t>(i)], app.exposure);
+  uploadFinished(app);
 
   if (app.compare.mode == CompareMode::SideBySide) {
     for (int i = 0; i < app.paneCount; ++i) {
@@ -279,9 +258,9 @@ void drawViewportContent(AppState& app, float x, float y, float w, float h) {
     return;
   }
 
-  // Difference heatmap of A against B, with its legend below.
-  updateDiff(app);
-  if (app.diff.valid) {
+  // Difference heatmap of A against B (made by refreshPanes in the background), with its legend below.
+  const bool diffCurrent = app.diff.valid && app.diff.panes[0] == ia && app.diff.panes[1] == ib;
+  if (diffCurrent) {
     dl->AddImage(app.diff.texture.imguiId(), ImVec2(r.x, r.y), ImVec2(r.x + r.w, r.y + r.h));
     drawLegend(dl, {r.x, r.y + r.h + 6.0f, r.w, 30.0f}, app.diff);
   }
@@ -290,7 +269,7 @@ void drawViewportContent(AppState& app, float x, float y, float w, float h) {
                 app.compare.diff == DiffMode::Absolute ? "absolute" : "relative", paneLetter(ia),
                 a.technique.c_str(), paneLetter(ib), b.technique.c_str());
   std::vector<std::string> lines{title};
-  if (!app.diff.valid) lines.emplace_back("waiting for both images at full resolution...");
+  if (!diffCurrent) lines.emplace_back("waiting for both images...");
   captionBox(dl, r.x, r.y, lines, IM_COL32(0, 0, 0, 170), r.w);
 }
 
