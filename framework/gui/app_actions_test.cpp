@@ -176,6 +176,22 @@ TEST(AppActions, ACameraChangeRestartsEveryActivePaneAndErrorsFollowTheReference
   EXPECT_FALSE(app.panes[2].shown.image);  // pane C is hidden with two panes: never rendered
 }
 
+TEST(AppActions, ADroppedFileOpensAsAPresetOrAsAScene) {
+  AppState app;
+  makeSmall(app);
+  openDroppedFile(app, std::string(LIGHTLAB_DATA_DIR) + "/presets/light_samples_convergence.json");
+  waitForSceneLoad(app);
+  EXPECT_EQ(app.paneCount, 4);  // the preset's layout
+  EXPECT_EQ(app.compare.reference, 3);
+  ASSERT_TRUE(app.scene);
+  EXPECT_TRUE(contains(app.scenePath, "cornell_box.json"));
+  openDroppedFile(app, kScenes + "bunny.json");
+  waitForSceneLoad(app);
+  EXPECT_TRUE(contains(app.scenePath, "bunny.json"));
+  EXPECT_EQ(app.paneCount, 4);  // a scene changes the scene only
+  EXPECT_EQ(app.camera.eye, app.scene->camera.eye);
+}
+
 TEST(AppActions, SceneListFindsScenesButNotPresetsOrTheSchema) {
   const auto files = findSceneFiles({kScenes});
   EXPECT_TRUE(std::any_of(files.begin(), files.end(), [](const std::string& f) { return contains(f, "cornell_box.json"); }));

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <ctime>
 #include <optional>
+#include <string>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -33,7 +34,9 @@ constexpr const char* kFontPath = "/usr/share/fonts/truetype/dejavu/DejaVuSans.t
 constexpr float kBaseFontPixels = 15.0f;
 constexpr float kPanelWidth = 400.0f;  // at UI scale 1
 
-void onGlfwError(int code, const char* text) { std::fprintf(stderr, "lightlab: GLFW error %d: %s\n", code, text); }
+// GLFW's last error, folded into our one-line messages instead of printed.
+std::string gLastGlfwError;
+void onGlfwError(int code, const char* text) { gLastGlfwError = "GLFW error " + std::to_string(code) + ": " + text; }
 
 void onDrop(GLFWwindow* window, int count, const char** paths) {
   auto* app = static_cast<AppState*>(glfwGetWindowUserPointer(window));
@@ -138,7 +141,8 @@ int runGui(const GuiOptions& options) {
   if (!options.scene.empty() && !fs::exists(options.scene)) throwUserError(options.scene + ": cannot open file");
 
   glfwSetErrorCallback(onGlfwError);
-  if (!glfwInit()) throwUserError("cannot open a window (no display?); use `lightlab render` headless");
+  if (!glfwInit())
+    throwUserError("cannot open a window (" + gLastGlfwError + "); without a display use `lightlab render`");
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
@@ -147,7 +151,8 @@ int runGui(const GuiOptions& options) {
   GLFWwindow* window = glfwCreateWindow(options.windowWidth, options.windowHeight, "LightLab", nullptr, nullptr);
   if (!window) {
     glfwTerminate();
-    throwUserError("cannot create an OpenGL 3.3 core window; use `lightlab render` headless");
+    throwUserError("cannot create an OpenGL 3.3 core window (" + gLastGlfwError +
+                   "); without one use `lightlab render`");
   }
   glfwMakeContextCurrent(window);
   glfwSwapInterval(1);

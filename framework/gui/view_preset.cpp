@@ -101,13 +101,13 @@ const char* compareModeName(CompareMode mode) {
 
 ViewPreset parsePreset(const std::string& text, const std::string& file, const std::string& baseDir) {
   const JsonDocument doc(text, file);
-  const JsonNode root(doc, doc.root(), "", "");
+  const JsonNode root(doc, doc.root(), "", "preset");
   root.requireObject();
+  if (!root.has("lightlab_preset") || root.json()["lightlab_preset"] != kFormatVersion)
+    root.fail("not a LightLab view preset: it needs \"lightlab_preset\": " + std::to_string(kFormatVersion) +
+              " (is this a scene? open scenes with `lightlab gui SCENE`)");
   root.allowOnly({"lightlab_preset", "description", "scene", "camera", "width", "height", "panes", "pane_count",
                   "compare", "ui_scale", "exposure"});
-  const int version = root.integer("lightlab_preset", 0, 0, 1000);
-  if (version != kFormatVersion)
-    root.fail("not a LightLab view preset: it needs \"lightlab_preset\": " + std::to_string(kFormatVersion));
 
   ViewPreset p;
   const std::string scene = root.string("scene");

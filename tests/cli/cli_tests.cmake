@@ -66,3 +66,16 @@ set_tests_properties(cli.help PROPERTIES PASS_REGULAR_EXPRESSION "render.*info.*
 lightlab_error_test(compare_sizes "image sizes differ" compare ${OUT}/cube.pfm ${OUT}/cornell.png)
 set_tests_properties(cli.error.compare_sizes PROPERTIES DEPENDS "cli.render.obj_scene;cli.render.cornell_box")
 lightlab_error_test(compare_missing "nothere\\.png: no such image file" compare ${OUT}/nothere.png ${OUT}/cornell.png)
+
+# The GUI's bad input: the same one-line contract, checked before any window opens.
+if(LIGHTLAB_WITH_GUI)
+  add_test(NAME cli.error.gui_without_display
+           COMMAND env -u DISPLAY bash ${EXPECT_ERROR} "cannot open a window \\(GLFW error [0-9]+: .*DISPLAY.*\\); without a display use"
+                   "" -- ${LL} gui ${SCENES}/cornell_box.json)
+  lightlab_error_test(gui_missing_preset "nope\\.json: cannot open preset file" gui --preset ${SCENES}/nope.json)
+  lightlab_error_test(gui_missing_scene "nope\\.json: cannot open file" gui ${SCENES}/nope.json)
+  lightlab_error_test(gui_scene_as_preset "cornell_box\\.json:1:1: not a LightLab view preset: it needs \"lightlab_preset\": 1"
+                      gui --preset ${SCENES}/cornell_box.json)
+  lightlab_error_test(gui_bad_preset_value "bad_preset\\.json:[0-9]+:[0-9]+: .*light_samples.*\\[1, 1024\\]"
+                      gui --preset ${PROJECT_SOURCE_DIR}/tests/gui/bad_preset.json)
+endif()
