@@ -30,6 +30,15 @@ for task in A2.2 A2.3; do
   grep -q "$task not implemented" "$work/stderr2.txt" || { echo "FAIL: $task is not reported as missing"; exit 1; }
 done
 [ -s "$work/out.png" ] || { echo "FAIL: no image written"; exit 1; }
+# A4: the BVH stubs fall back to brute force: same picture, tasks named, pixels not striped.
+"$work/build/lightlab" --quiet render "$work/tree/data/scenes/bunny.json" -a bvh --width 48 --set intersection=framework \
+  -o "$work/bvh.pfm" 2>"$work/stderr3.txt"
+"$work/build/lightlab" --quiet render "$work/tree/data/scenes/bunny.json" -a none --width 48 --set intersection=framework \
+  -o "$work/none.pfm" 2>/dev/null
+for task in A4.1 A4.2; do
+  grep -q "$task not implemented" "$work/stderr3.txt" || { echo "FAIL: $task is not reported as missing"; exit 1; }
+done
+cmp -s "$work/bvh.pfm" "$work/none.pfm" || { echo "FAIL: the A4 fallback changed the picture"; exit 1; }
 if command -v xvfb-run >/dev/null; then
   (cd "$work/tree" && xvfb-run -a -s '-screen 0 1280x800x24' "$work/build/lightlab" gui \
      --preset tests/gui/two_panes.json --screenshot "$work/gui.png" --frames 3 --timeout 600 >/dev/null)
@@ -38,4 +47,4 @@ if command -v xvfb-run >/dev/null; then
   done
   grep -q '"phase": "done"' "$work/gui.json" || { echo "FAIL: the GUI panes did not finish"; exit 1; }
 fi
-echo "student tree: builds, runs, reports A2.1-A2.5 as not implemented (CLI and GUI)"
+echo "student tree: builds, runs, reports A2.1-A2.5 and A4.1-A4.2 as not implemented (CLI and GUI)"

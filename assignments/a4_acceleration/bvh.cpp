@@ -176,7 +176,7 @@ FlatBvh buildBvh(const Geometry& geometry, const SplitSettings& settings, Boundi
     info->sahCost = sahCost(bvh, settings);
     info->missingTasks = buildLog.missing();
   }
-  for (const auto& [id, what] : buildLog.missing()) reportMissingTask(id.c_str(), what.c_str());
+  for (const auto& [id, what] : buildLog.missing()) reportMissingTask(id.c_str(), what.c_str(), false);  // exact fallback: not striped
   return bvh;
 }
 

@@ -45,7 +45,7 @@ class BvhAccelerator final : public Accelerator {
   // A stub that ran during the build made this tree a brute-force leaf: say
   // so on every query, as the query stubs do.
   void reportBuildStubs() const {
-    for (const auto& [id, what] : info_.missingTasks) reportMissingTask(id.c_str(), what.c_str());
+    for (const auto& [id, what] : info_.missingTasks) reportMissingTask(id.c_str(), what.c_str(), false);  // exact fallback: not striped
   }
 
   a4::SplitSettings settings_;

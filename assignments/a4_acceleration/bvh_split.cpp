@@ -143,7 +143,7 @@ size_t splitPrimitives(std::span<BuildPrim> prims, const Bounds3& bounds, const 
   }
   return 0;
 #else
-  LIGHTLAB_TODO("A4.1", "BVH build: splitting a node (assignments/a4_acceleration/bvh_split.cpp)");
+  LIGHTLAB_TODO_EXACT("A4.1", "BVH build: splitting a node (assignments/a4_acceleration/bvh_split.cpp)");
   (void)prims;
   (void)bounds;
   (void)settings;

@@ -93,7 +93,7 @@ bool intersectBvh(const FlatBvh& bvh, const Ray& ray, Hit& hit, QueryCounters& c
   return bvh.volume == BoundingVolume::Box ? traverse<BoundingVolume::Box, false>(bvh, r, hit, counters)
                                            : traverse<BoundingVolume::Sphere, false>(bvh, r, hit, counters);
 #else
-  LIGHTLAB_TODO("A4.2", "BVH traversal (assignments/a4_acceleration/bvh_traversal.cpp)");
+  LIGHTLAB_TODO_EXACT("A4.2", "BVH traversal (assignments/a4_acceleration/bvh_traversal.cpp)");
   const auto n = static_cast<uint32_t>(bvh.primIds.size());
   for (uint32_t s = 0; s < n; ++s) closerPrimitiveHit(bvh, s, r, hit);  // fallback: brute force
   counters.primitivesTested += n;
@@ -110,7 +110,7 @@ bool occludedBvh(const FlatBvh& bvh, const Ray& ray, QueryCounters& counters) {
   return bvh.volume == BoundingVolume::Box ? traverse<BoundingVolume::Box, true>(bvh, r, hit, counters)
                                            : traverse<BoundingVolume::Sphere, true>(bvh, r, hit, counters);
 #else
-  LIGHTLAB_TODO("A4.2", "BVH traversal (assignments/a4_acceleration/bvh_traversal.cpp)");
+  LIGHTLAB_TODO_EXACT("A4.2", "BVH traversal (assignments/a4_acceleration/bvh_traversal.cpp)");
   const auto n = static_cast<uint32_t>(bvh.primIds.size());
   for (uint32_t s = 0; s < n; ++s) {
     ++counters.primitivesTested;

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/math.h"
 #include "core/params.h"
 #include "core/ray.h"
 #include "scene/geometry.h"
@@ -33,6 +34,16 @@ struct AcceleratorStats {
   double sahCost = 0.0;  // expected cost per ray under the surface area heuristic (0 = not reported)
 };
 
+// One node of a structure as the GUI draws it: a box (BVH box, KD-tree or
+// octree cell) or a sphere (BVH with bounding spheres). World space.
+struct NodeShape {
+  Bounds3 box;
+  bool isSphere = false;
+  Vec3 center{0.0f};
+  float radius = 0.0f;
+  bool leaf = false;
+};
+
 class Accelerator {
  public:
   virtual ~Accelerator() = default;
@@ -43,6 +54,12 @@ class Accelerator {
   // Whether anything is hit with ray.tmin < t < ray.tmax (may stop at the first).
   virtual bool occluded(const Ray& ray, QueryCounters& counters) const = 0;
   virtual AcceleratorStats stats() const = 0;
+  // The nodes at `depth` (root = 0), plus leaves that end above it, for the
+  // GUI's structure overlay. Default: nothing to draw (brute force, Embree).
+  virtual std::vector<NodeShape> nodesAtDepth(int depth) const {
+    (void)depth;
+    return {};
+  }
 };
 
 // What the registry knows about an accelerator: its name, help, parameters

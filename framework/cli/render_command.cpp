@@ -78,8 +78,9 @@ Command addRenderCommand(CLI::App& app, const GlobalOptions& global) {
       out << stats.toJson().dump(2) << "\n";
     }
     for (const auto& [id, what] : stats.missingTasks)
-      std::fprintf(stderr, "lightlab: %s not implemented: %s -- a fallback was used; its pixels are striped magenta\n",
-                   id.c_str(), what.c_str());
+      std::fprintf(stderr, "lightlab: %s not implemented: %s -- %s\n", id.c_str(), what.c_str(),
+                   stats.exactFallbacks.count(id) ? "the framework's fallback was used (same picture, slower)"
+                                                  : "a fallback was used; its pixels are striped magenta");
     if (stats.work.nonFinite > 0)
       std::fprintf(stderr, "lightlab: %llu NaN/Inf samples were replaced by black\n",
                    static_cast<unsigned long long>(stats.work.nonFinite));

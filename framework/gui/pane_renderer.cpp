@@ -170,6 +170,7 @@ void PaneRenderer::render(const RenderRequest& request, uint64_t id) {
       s.seconds = timer.seconds();
       s.stats = job.stats();
       s.missingTasks = job.taskLog().missing();
+      s.exactFallbacks = job.taskLog().exact();
       if (!preview && done == 1) lastPassSeconds_ = s.seconds;
       publish(s);
     });

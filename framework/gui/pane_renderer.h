@@ -13,6 +13,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <set>
 #include <string>
 #include <thread>
 
@@ -47,6 +48,7 @@ struct PaneSnapshot {
   double buildSeconds = 0.0;            // accelerator build of the current scene
   RenderStats stats;                    // as of the last completed pass
   std::map<std::string, std::string> missingTasks;  // student task id -> what
+  std::set<std::string> exactFallbacks;             // missing tasks whose fallback changes only the time
   std::string error;                    // set when phase == Failed
 };
 

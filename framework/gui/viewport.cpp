@@ -138,7 +138,9 @@ std::vector<std::string> paneCaption(const AppState& app, int index) {
 void paneBanners(ImDrawList* dl, const PaneState& p, Rect r) {
   std::vector<std::string> lines;
   for (const auto& [id, what] : p.shown.missingTasks)
-    lines.push_back("Task " + id + " not implemented: " + what + " (striped pixels use the stub)");
+    lines.push_back("Task " + id + " not implemented: " + what +
+                    (p.shown.exactFallbacks.count(id) ? " (fallback: same picture, slower)"
+                                                      : " (striped pixels use the stub)"));
   if (!lines.empty()) captionBox(dl, r.x, r.y + r.h, lines, IM_COL32(150, 20, 120, 230), r.w, Anchor::Bottom);
   if (p.shown.phase == PaneSnapshot::Phase::Failed) {
     const float h = ImGui::GetTextLineHeight() + 8.0f;

@@ -35,6 +35,7 @@ void RenderJob::run(const std::function<void(int, int)>& onPass) {
   stats_.renderSeconds = timer.seconds();
   stats_.cancelled = cancel_;
   stats_.missingTasks = taskLog_.missing();
+  stats_.exactFallbacks = taskLog_.exact();
 }
 
 }  // namespace ll

@@ -28,10 +28,12 @@ nlohmann::json RenderStats::toJson() const {
         {"memory_bytes", accel.memoryBytes},
         {"nodes", accel.nodeCount},
         {"depth", accel.depth},
+        {"sah_cost", accel.sahCost},
         {"nodes_visited", work.query.nodesVisited},
         {"primitives_tested", work.query.primitivesTested}}},
       {"non_finite_samples", work.nonFinite},
       {"missing_tasks", missingTasks},
+      {"exact_fallbacks", exactFallbacks},
   };
 }
 

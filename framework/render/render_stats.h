@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 #include <map>
+#include <set>
 #include <string>
 
 #include <nlohmann/json_fwd.hpp>
@@ -39,6 +40,7 @@ struct RenderStats {
   WorkCounters work;
   bool cancelled = false;
   std::map<std::string, std::string> missingTasks;  // task id -> what
+  std::set<std::string> exactFallbacks;             // of those, the ones whose fallback changes nothing but time
 
   nlohmann::json toJson() const;
 };

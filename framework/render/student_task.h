@@ -2,11 +2,13 @@
 //   LIGHTLAB_TODO("A2.4", "Blinn-Phong shading");
 // and then returns its fallback. The render records the task as missing (the
 // CLI and GUI name it), and marks the pixels that went through the stub with
-// magenta stripes -- never a crash and never a silently black image.
+// magenta stripes -- never a crash and never a silently black image. Stubs
+// whose fallback is exact use LIGHTLAB_TODO_EXACT (reported, not striped).
 #pragma once
 
 #include <map>
 #include <mutex>
+#include <set>
 #include <string>
 
 namespace ll {
@@ -14,13 +16,16 @@ namespace ll {
 // Missing tasks seen during one render (thread-safe).
 class TaskLog {
  public:
-  void report(const std::string& id, const std::string& what);
+  // exact: the stub's fallback gives the same result (only slower), no pixel is striped.
+  void report(const std::string& id, const std::string& what, bool exact = false);
   std::map<std::string, std::string> missing() const;  // id -> description
+  std::set<std::string> exact() const;                 // the missing ids whose fallback is exact
   void clear();
 
  private:
   mutable std::mutex mutex_;
   std::map<std::string, std::string> missing_;
+  std::set<std::string> striping_;  // ids reported at least once by a pixel-striping stub
 };
 
 // Makes `log` the current thread's log while in scope (the job runner does
@@ -36,12 +41,17 @@ class ScopedTaskLog {
   TaskLog* previous_;
 };
 
-// Records a missing task in the current thread's log and flags the current
-// sample. Safe to call with no log installed.
-void reportMissingTask(const char* id, const char* what);
+// Records a missing task in the current thread's log and, if `marksPixels`,
+// flags the current sample. Safe to call with no log installed. Cheap when
+// called per ray: after the first report of an id to a log, a thread skips the lock.
+void reportMissingTask(const char* id, const char* what, bool marksPixels = true);
 // Reads and clears the per-thread flag "the current sample used a stub".
 bool takeStubFlag();
 
 }  // namespace ll
 
 #define LIGHTLAB_TODO(id, what) ::ll::reportMissingTask(id, what)
+// For a stub whose fallback gives exactly the right answer, only slower (an
+// accelerator falling back to brute force): the task is reported, the
+// pixels are not striped.
+#define LIGHTLAB_TODO_EXACT(id, what) ::ll::reportMissingTask(id, what, false)
