@@ -2,6 +2,8 @@
 // buildBvh() with the student's split (A4.1) and queried with the student's
 // traversal (A4.2). Framework code: registration, parameters, statistics.
 #include <memory>
+#include <utility>
+#include <vector>
 
 #include "a4_tasks.h"
 #include "core/timer.h"
@@ -31,6 +33,36 @@ class BvhAccelerator final : public Accelerator {
     return a4::occludedBvh(bvh_, ray, counters);
   }
 
+  std::vector<NodeShape> nodesAtDepth(int depth) const override {
+    std::vector<NodeShape> shapes;
+    if (bvh_.nodes.empty()) return shapes;
+    std::vector<std::pair<uint32_t, int>> stack{{0u, 0}};  // (node, its depth)
+    while (!stack.empty()) {
+      const auto [index, d] = stack.back();
+      stack.pop_back();
+      const a4::BvhNode& n = bvh_.nodes[index];
+      if (d == depth || n.isLeaf()) {
+        NodeShape shape;
+        shape.leaf = n.isLeaf();
+        if (bvh_.volume == a4::BoundingVolume::Sphere) {
+          shape.isSphere = true;
+          shape.center = n.lo;
+          shape.radius = n.hi.x;
+          shape.box.extend(n.lo - Vec3(n.hi.x));
+          shape.box.extend(n.lo + Vec3(n.hi.x));
+        } else {
+          shape.box.extend(n.lo);
+          shape.box.extend(n.hi);
+        }
+        shapes.push_back(shape);
+        continue;
+      }
+      stack.emplace_back(n.offset, d + 1);
+      stack.emplace_back(index + 1, d + 1);
+    }
+    return shapes;
+  }
+
   AcceleratorStats stats() const override {
     AcceleratorStats s;
     s.buildSeconds = buildSeconds_;
@@ -45,7 +77,8 @@ class BvhAccelerator final : public Accelerator {
   // A stub that ran during the build made this tree a brute-force leaf: say
   // so on every query, as the query stubs do.
   void reportBuildStubs() const {
-    for (const auto& [id, what] : info_.missingTasks) reportMissingTask(id.c_str(), what.c_str(), false);  // exact fallback: not striped
+    for (const auto& [id, what] : info_.missingTasks)
+      reportMissingTask(id.c_str(), what.c_str(), false);  // exact fallback: not striped
   }
 
   a4::SplitSettings settings_;

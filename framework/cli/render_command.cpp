@@ -1,6 +1,8 @@
 // lightlab render SCENE [-t TECHNIQUE] [-a ACCEL] [--width W --height H]
 //                [--spp N] [--seed S] [--set name=value ...] -o OUT [--stats FILE]
 #include <cstdio>
+#include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 
@@ -10,6 +12,7 @@
 #include "cli/scene_setup.h"
 #include "core/error.h"
 #include "core/progress.h"
+#include "render/cost_image.h"
 #include "render/render_job.h"
 
 namespace ll::cli {
@@ -21,6 +24,7 @@ struct RenderOptions {
   uint64_t seed = 0;
   float exposure = 0.0f;
   std::vector<std::string> sets;
+  std::string cost;  // "", nodes or primitives
 };
 }  // namespace
 
@@ -45,6 +49,10 @@ Command addRenderCommand(CLI::App& app, const GlobalOptions& global) {
       ->required();
   cmd->add_option("--exposure", o->exposure, "Exposure in stops for .png/.jpg output")->capture_default_str();
   cmd->add_option("--stats", o->statsPath, "Write statistics (times, rays by kind, ...) as JSON");
+  cmd->add_option("--cost", o->cost,
+                  "Instead of the image: the accelerator's cost per pixel for the camera ray, as a heatmap "
+                  "(.png/.jpg, 99th-percentile scale) or raw counts (.pfm/.hdr)")
+      ->check(CLI::IsMember({"nodes", "primitives"}));
   return [o, &global]() {
     SceneSetup s = setUpScene(o->scene, o->technique, o->accelerator, o->sets);
     RenderSettings settings;
@@ -57,6 +65,27 @@ Command addRenderCommand(CLI::App& app, const GlobalOptions& global) {
     settings.spp = o->spp;
     settings.seed = o->seed;
 
+    if (!o->cost.empty()) {
+      Camera camera = renderCamera(s.scene, settings);
+      const CostMetric metric = o->cost == "nodes" ? CostMetric::NodesVisited : CostMetric::PrimitivesTested;
+      const Image counts = accelCostImage(*s.accel, camera, metric);
+      const std::string ext = std::filesystem::path(o->output).extension().string();
+      float scale = 0.0f;
+      if (ext == ".pfm" || ext == ".hdr")
+        saveImage(counts, o->output);
+      else
+        saveImage(costHeatmap(counts, 0.0f, &scale), o->output);
+      double sum = 0.0, max = 0.0;
+      for (const Rgb& c : counts.pixels()) {
+        sum += static_cast<double>(c.r);
+        max = std::max(max, static_cast<double>(c.r));
+      }
+      std::printf("wrote %s (%s per camera ray, accelerator %s: mean %.2f, max %.0f%s)\n", o->output.c_str(),
+                  o->cost == "nodes" ? "nodes visited" : "primitives tested", s.accelInfo->name.c_str(),
+                  sum / static_cast<double>(counts.pixelCount()), max,
+                  scale > 0 ? (", colour scale 0-" + std::to_string(static_cast<int>(scale))).c_str() : "");
+      return;
+    }
     const auto technique = s.technique->make();
     RenderJob job(s.scene, *s.accel, *technique, s.techniqueParams, settings);
     ProgressBar bar("render " + o->technique, 1.0, global.quiet);

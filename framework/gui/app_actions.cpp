@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "gui/view_camera.h"
 #include "modules/registry.h"
+#include "render/cost_image.h"
 #include "scene/scene_loader.h"
 
 namespace ll::gui {
@@ -55,6 +56,21 @@ void initPanes(AppState& app) {
     setTechnique(app, i, techs[t].name);
     setAccelerator(app, i, accels.size() > 1 ? accels[1].name : accels[0].name);
   }
+}
+
+const char* viewName(PaneView view) {
+  switch (view) {
+    case PaneView::NodesVisited: return "nodes";
+    case PaneView::PrimitivesTested: return "primitives";
+    case PaneView::Image: break;
+  }
+  return "image";
+}
+
+PaneView viewFromName(const std::string& name) {
+  if (name == "nodes") return PaneView::NodesVisited;
+  if (name == "primitives") return PaneView::PrimitivesTested;
+  return PaneView::Image;
 }
 
 void addMessage(AppState& app, const std::string& text, bool error) {
@@ -160,6 +176,7 @@ void applyPreset(AppState& app, const ViewPreset& preset) {
       for (const auto& [k, v] : setup.techniqueParams) p.techniqueParams.set(k, v);
       for (const auto& [k, v] : setup.accelParams) p.accelParams.set(k, v);
       p.spp = setup.spp;
+      p.view = viewFromName(setup.view);
     }
   } catch (const std::exception& e) {
     addMessage(app, std::string("preset not applied: ") + e.what());
@@ -173,6 +190,7 @@ void applyPreset(AppState& app, const ViewPreset& preset) {
     dst.techniqueParams = src.techniqueParams;
     dst.accelParams = src.accelParams;
     dst.spp = src.spp;
+    dst.view = src.view;
     dst.dirty = true;
   }
   app.paneCount = preset.paneCount;
@@ -181,6 +199,8 @@ void applyPreset(AppState& app, const ViewPreset& preset) {
   app.height = preset.height;
   app.exposure = preset.exposure;
   app.uiScale = preset.uiScale;
+  app.showStructure = preset.showStructure;
+  app.structureDepth = preset.structureDepth;
   const bool sameScene = !app.scenePath.empty() && fs::exists(preset.scene) && fs::exists(app.scenePath) &&
                          fs::equivalent(preset.scene, app.scenePath);
   if (preset.camera) {
@@ -211,11 +231,14 @@ ViewPreset capturePreset(const AppState& app) {
   p.compare = app.compare;
   p.exposure = app.exposure;
   p.uiScale = app.uiScale;
+  p.showStructure = app.showStructure;
+  p.structureDepth = app.structureDepth;
   for (const PaneState& pane : app.panes) {
     PaneSetup s;
     s.technique = pane.technique;
     s.accelerator = pane.accelerator;
     s.spp = pane.spp;
+    s.view = viewName(pane.view);
     for (const ParamDecl& d : pane.techniqueParams.decls()) s.techniqueParams[d.name] = pane.techniqueParams.text(d.name);
     for (const ParamDecl& d : pane.accelParams.decls()) s.accelParams[d.name] = pane.accelParams.text(d.name);
     p.panes.push_back(s);
@@ -290,6 +313,7 @@ void submitPanes(AppState& app) {
     r.techniqueParams = pane.techniqueParams;
     r.accelParams = pane.accelParams;
     r.settings = renderSettings(app, pane);
+    r.view = pane.view;
     pane.renderer->submit(std::move(r));
   }
 }
@@ -305,9 +329,14 @@ void refreshPanes(AppState& app) {
       continue;
     pane.encodedVersion = pane.shown.version;
     pane.encodedExposure = app.exposure;
-    bg.post("encode " + std::to_string(i), [image = pane.shown.image, mail = pane.display, e = app.exposure] {
-      mail->put(encodeForDisplay(*image, e));
-    });
+    bg.post("encode " + std::to_string(i),
+            [image = pane.shown.image, mail = pane.display, e = app.exposure, cost = pane.shown.view != PaneView::Image] {
+              if (!cost) return mail->put(encodeForDisplay(*image, e));
+              float scale = 0.0f;
+              DisplayImage d = encodeForDisplay(costHeatmap(*image, 0.0f, &scale), 0.0f);
+              d.legendMax = scale;
+              mail->put(std::move(d));
+            });
   }
 
   // Errors against the reference pane.
@@ -320,6 +349,7 @@ void refreshPanes(AppState& app) {
     }
     const PaneSnapshot* refShot = ref >= 0 && ref < kMaxPanes && i != ref ? &app.panes[static_cast<size_t>(ref)].shown : nullptr;
     const bool comparable = refShot && pane.shown.image && refShot->image && !pane.shown.preview && !refShot->preview &&
+                            pane.shown.view == PaneView::Image && refShot->view == PaneView::Image &&
                             pane.shown.image->width() == refShot->image->width() &&
                             pane.shown.image->height() == refShot->image->height();
     if (!comparable) {

@@ -19,6 +19,10 @@ void initPanes(AppState& app);
 
 void addMessage(AppState& app, const std::string& text, bool error = true);
 
+// Pane views by their preset names: image, nodes, primitives.
+const char* viewName(PaneView view);
+PaneView viewFromName(const std::string& name);
+
 // Starts loading a scene in the background; the current scene stays until it
 // succeeds. keepCamera = false resets the view to the new scene's camera.
 void openScene(AppState& app, const std::string& path, bool keepCamera = false);

@@ -31,6 +31,7 @@ struct PaneState {
   std::string accelerator = "none";
   ParamSet techniqueParams, accelParams;  // live values; their declarations come from the registries
   int spp = 16;
+  PaneView view = PaneView::Image;
   std::unique_ptr<PaneRenderer> renderer = std::make_unique<PaneRenderer>();
   bool dirty = true;  // settings changed since the last submit
 
@@ -45,6 +46,10 @@ struct PaneState {
   ImageError error;
   std::shared_ptr<Mailbox<ImageError>> errorMail = std::make_shared<Mailbox<ImageError>>();
   uint64_t errorVersions[2] = {0, 0};
+  // The structure overlay: nodes of the pane's accelerator at the chosen depth (cached).
+  std::shared_ptr<const Accelerator> overlayAccel;
+  int overlayDepth = -1;
+  std::vector<NodeShape> overlayNodes;
 };
 
 struct DiffState {  // the difference heatmap of pane A against pane B
@@ -107,6 +112,8 @@ struct AppState {
   CompareSetup compare;
   DiffState diff;
   float exposure = 0.0f;  // display exposure, stops
+  bool showStructure = false;  // draw the accelerator's nodes over each pane
+  int structureDepth = 3;      // at this depth (root = 0)
   float uiScale = 1.0f;   // user's scale, times the monitor's content scale
   float contentScale = 1.0f;
   float appliedFontScale = 0.0f;

@@ -21,6 +21,7 @@ void GlTexture::upload(const DisplayImage& image) {
                image.rgba.data());
   width_ = image.width;
   height_ = image.height;
+  legendMax_ = image.legendMax;
 }
 
 }  // namespace ll::gui

@@ -19,12 +19,14 @@ class GlTexture {
   bool valid() const { return id_ != 0; }
   int width() const { return width_; }
   int height() const { return height_; }
+  float legendMax() const { return legendMax_; }  // of the DisplayImage last uploaded
   // For ImGui::Image / ImDrawList::AddImage.
   void* imguiId() const { return reinterpret_cast<void*>(static_cast<intptr_t>(id_)); }
 
  private:
   unsigned id_ = 0;
   int width_ = 0, height_ = 0;
+  float legendMax_ = 0.0f;
 };
 
 }  // namespace ll::gui

@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "core/timer.h"
 #include "modules/registry.h"
+#include "render/cost_image.h"
 
 namespace ll::gui {
 
@@ -41,7 +42,7 @@ PaneRenderer::~PaneRenderer() {
     std::lock_guard lock(mutex_);
     quit_ = true;
     pending_.reset();
-    if (running_) running_->cancel();
+    cancelRunning();
   }
   wake_.notify_all();
   worker_.join();
@@ -53,7 +54,7 @@ uint64_t PaneRenderer::submit(RenderRequest request) {
     std::lock_guard lock(mutex_);
     pending_ = std::move(request);
     id = ++submitted_;
-    if (running_) running_->cancel();
+    cancelRunning();
   }
   wake_.notify_all();
   return id;
@@ -63,12 +64,22 @@ void PaneRenderer::stop() {
   std::lock_guard lock(mutex_);
   pending_.reset();
   ++submitted_;  // whatever is running now is superseded
-  if (running_) running_->cancel();
+  cancelRunning();
 }
 
 PaneSnapshot PaneRenderer::snapshot() const {
   std::lock_guard lock(mutex_);
   return snapshot_;
+}
+
+void PaneRenderer::cancelRunning() {
+  if (running_) running_->cancel();
+  if (runningCost_) *runningCost_ = true;
+}
+
+std::shared_ptr<const Accelerator> PaneRenderer::accelerator() const {
+  std::lock_guard lock(mutex_);
+  return publishedAccel_;
 }
 
 bool PaneRenderer::finished() const {
@@ -133,8 +144,11 @@ void PaneRenderer::render(const RenderRequest& request, uint64_t id) {
     accelKey_.clear();
     accel_ = buildAccelerator(accelInfo, request.accelParams, request.scene->geometry, &buildSeconds_);
     accelKey_ = key;
+    std::lock_guard lock(mutex_);
+    publishedAccel_ = accel_;
   }
   s.buildSeconds = buildSeconds_;
+  if (request.view != PaneView::Image) return renderCost(request, id, s);
   const TechniqueInfo& techInfo = findTechnique(request.technique);
   // The cost of a pass is remembered per (scene, accelerator, technique, parameters, size).
   const std::string costKey = key + "|" + techInfo.name + "|" + request.techniqueParams.toJson().dump() + "|" +
@@ -165,6 +179,7 @@ void PaneRenderer::render(const RenderRequest& request, uint64_t id) {
       s.image = std::make_shared<const Image>(job.frame().resolve());
       s.imageRequest = id;
       s.preview = preview;
+      s.view = PaneView::Image;
       s.passes = preview ? 0 : done;
       s.totalPasses = preview ? 0 : total;
       s.seconds = timer.seconds();
@@ -191,6 +206,38 @@ void PaneRenderer::render(const RenderRequest& request, uint64_t id) {
     if (!runJob(preview, true)) return;
   }
   if (!runJob(request.settings, false)) return;
+  s.phase = PaneSnapshot::Phase::Done;
+  publish(s);
+}
+
+void PaneRenderer::renderCost(const RenderRequest& request, uint64_t id, PaneSnapshot s) {
+  std::atomic<bool> cancel{false};
+  {
+    std::lock_guard lock(mutex_);
+    if (pending_ || quit_) return;
+    runningCost_ = &cancel;
+  }
+  s.phase = PaneSnapshot::Phase::Rendering;
+  s.started = std::chrono::steady_clock::now();
+  publish(s);
+  const Timer timer;
+  const Camera camera = renderCamera(*request.scene, request.settings);
+  const CostMetric metric =
+      request.view == PaneView::NodesVisited ? CostMetric::NodesVisited : CostMetric::PrimitivesTested;
+  Image counts = accelCostImage(*accel_, camera, metric, &cancel);
+  {
+    std::lock_guard lock(mutex_);
+    runningCost_ = nullptr;
+  }
+  if (counts.empty()) return;
+  s.image = std::make_shared<const Image>(std::move(counts));
+  s.imageRequest = id;
+  s.preview = false;
+  s.view = request.view;
+  s.passes = s.totalPasses = 1;
+  s.seconds = timer.seconds();
+  s.stats = RenderStats{};
+  s.stats.work.rays[static_cast<size_t>(RayKind::Camera)] = static_cast<uint64_t>(camera.width) * camera.height;
   s.phase = PaneSnapshot::Phase::Done;
   publish(s);
 }

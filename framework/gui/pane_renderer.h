@@ -6,6 +6,7 @@
 // on a render.
 #pragma once
 
+#include <atomic>
 #include <chrono>
 #include <condition_variable>
 #include <cstdint>
@@ -25,12 +26,16 @@
 
 namespace ll::gui {
 
+// What a pane shows: the technique's image, or the accelerator's cost per pixel.
+enum class PaneView { Image, NodesVisited, PrimitivesTested };
+
 struct RenderRequest {
   std::shared_ptr<const Scene> scene;
   uint64_t sceneVersion = 0;  // changes whenever the scene is (re)loaded: the accelerator is rebuilt
   std::string technique, accelerator;
   ParamSet techniqueParams, accelParams;
   RenderSettings settings;
+  PaneView view = PaneView::Image;
 };
 
 struct PaneSnapshot {
@@ -41,6 +46,7 @@ struct PaneSnapshot {
   uint64_t imageRequest = 0;            // the submit() the image was rendered for
   std::shared_ptr<const Image> image;   // linear radiance, stub pixels striped magenta
   bool preview = false;                 // image is the quick low-resolution first look
+  PaneView view = PaneView::Image;      // what `image` holds: radiance, or per-pixel counts
   int passes = 0, totalPasses = 0;
   double seconds = 0.0;                 // render time up to the last completed pass (excludes build)
   std::chrono::steady_clock::time_point started;  // when the current job began, for a live clock
@@ -67,16 +73,21 @@ class PaneRenderer {
   PaneSnapshot snapshot() const;
   // True once the latest request has finished (or failed) and nothing is queued.
   bool finished() const;
+  // The accelerator of the current scene (null before the first build); immutable once published.
+  std::shared_ptr<const Accelerator> accelerator() const;
 
  private:
   void workerLoop();
   void render(const RenderRequest& request, uint64_t id);
+  void renderCost(const RenderRequest& request, uint64_t id, PaneSnapshot s);
   void publish(const PaneSnapshot& s);
 
   mutable std::mutex mutex_;
   std::condition_variable wake_;
   std::optional<RenderRequest> pending_;
-  RenderJob* running_ = nullptr;  // guarded by mutex_, for cancel
+  RenderJob* running_ = nullptr;                 // guarded by mutex_, for cancel
+  std::atomic<bool>* runningCost_ = nullptr;     // the cost image's cancel flag, likewise
+  void cancelRunning();                          // call with mutex_ held
   bool quit_ = false;
   bool busy_ = false;
   uint64_t submitted_ = 0;  // id of the newest request (or stop)
@@ -84,6 +95,7 @@ class PaneRenderer {
 
   // Worker-only state: the accelerator cache and the last pass time.
   std::shared_ptr<const Accelerator> accel_;
+  std::shared_ptr<const Accelerator> publishedAccel_;  // guarded by mutex_, for the UI
   std::string accelKey_;
   double buildSeconds_ = 0.0;
   double lastPassSeconds_ = -1.0;  // the first full pass of the last render; < 0 = unknown

@@ -10,6 +10,7 @@
 #include <stb/stb_image_write.h>
 
 #include "core/error.h"
+#include "gui/app_actions.h"
 
 namespace ll::gui {
 
@@ -50,6 +51,9 @@ std::string saveScreenshotSidecar(const AppState& app, const std::string& path, 
             {"missing_tasks", p.shown.missingTasks},
             {"error", p.shown.error},
             {"params", p.techniqueParams.toJson()},
+            {"view", viewName(p.view)},
+            {"legend_max", p.texture.legendMax()},
+            {"structure_nodes", app.showStructure ? p.overlayNodes.size() : 0},
             {"accel_params", p.accelParams.toJson()}};
     if (p.shown.image) pj["image_size"] = {p.shown.image->width(), p.shown.image->height()};
     j["panes"].push_back(pj);

@@ -120,6 +120,12 @@ void layoutSection(AppState& app) {
   if (ImGui::Combo("error against", &ref, refs, kMaxPanes + 1)) app.compare.reference = ref - 1;
   helpMarker("RMSE and SSIM of every other pane against this reference pane, updated as passes arrive.");
   ImGui::SliderFloat("exposure", &app.exposure, -8.0f, 8.0f, "%+.1f stops");
+  ImGui::Checkbox("structure", &app.showStructure);
+  recordWidget(app, "structure.show");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);
+  ImGui::SliderInt("depth", &app.structureDepth, 0, 30, "depth %d", ImGuiSliderFlags_AlwaysClamp);
+  helpMarker("Draws the nodes of each pane's accelerator at this depth (boxes, cells or spheres; leaves above it in orange).");
   ImGui::SetNextItemWidth(80 * ImGui::GetIO().FontGlobalScale);
   int size[2] = {app.width, app.height};
   if (ImGui::InputInt2("render size (0 = scene)", size, ImGuiInputTextFlags_EnterReturnsTrue)) {
@@ -184,6 +190,15 @@ void paneSection(AppState& app, int i) {
     if (paramWidgets(p.accelParams)) p.dirty = true;
     ImGui::TreePop();
   }
+  const char* views[] = {"image", "cost: nodes visited", "cost: primitives tested"};
+  int view = static_cast<int>(p.view);
+  if (ImGui::Combo("view", &view, views, 3)) {
+    p.view = static_cast<PaneView>(view);
+    p.dirty = true;
+  }
+  recordWidget(app, std::string(1, paneLetter(i)) + ".view");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("cost: the accelerator's work for the camera ray of each pixel, as a heatmap with its scale");
   if (ImGui::Button("Restart")) p.dirty = true;
   if (app.scene) {
     const EffectSet sim = findTechnique(p.technique).simulates;

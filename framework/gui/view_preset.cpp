@@ -57,7 +57,7 @@ const Info& findNamed(const JsonNode& node, const std::string& key, const Info& 
 
 PaneSetup parsePane(const JsonNode& n) {
   n.requireObject();
-  n.allowOnly({"technique", "accelerator", "params", "accel_params", "spp"});
+  n.allowOnly({"technique", "accelerator", "params", "accel_params", "spp", "view"});
   PaneSetup p;
   const TechniqueInfo& t = findNamed<TechniqueInfo>(n, "technique", &findTechnique);
   p.technique = t.name;
@@ -67,6 +67,11 @@ PaneSetup parsePane(const JsonNode& n) {
   if (n.has("accel_params"))
     p.accelParams = parseParams(n.child("accel_params"), "accelerator '" + a.name + "'", a.params);
   p.spp = n.integer("spp", p.spp, 1, 1 << 16);
+  if (n.has("view")) {
+    p.view = n.string("view");
+    if (p.view != "image" && p.view != "nodes" && p.view != "primitives")
+      n.child("view").fail("unknown view '" + p.view + "' (allowed: image, nodes, primitives)");
+  }
   return p;
 }
 
@@ -107,7 +112,7 @@ ViewPreset parsePreset(const std::string& text, const std::string& file, const s
     root.fail("not a LightLab view preset: it needs \"lightlab_preset\": " + std::to_string(kFormatVersion) +
               " (is this a scene? open scenes with `lightlab gui SCENE`)");
   root.allowOnly({"lightlab_preset", "description", "scene", "camera", "width", "height", "panes", "pane_count",
-                  "compare", "ui_scale", "exposure"});
+                  "compare", "ui_scale", "exposure", "structure"});
 
   ViewPreset p;
   const std::string scene = root.string("scene");
@@ -118,6 +123,13 @@ ViewPreset parsePreset(const std::string& text, const std::string& file, const s
   p.height = root.integer("height", 0, 0, 16384);
   p.exposure = root.number("exposure", 0.0f, -20.0f, 20.0f);
   p.uiScale = root.number("ui_scale", 1.0f, 0.5f, 4.0f);
+  if (root.has("structure")) {
+    const JsonNode st = root.child("structure");
+    st.requireObject();
+    st.allowOnly({"show", "depth"});
+    p.showStructure = st.boolean("show", true);
+    p.structureDepth = st.integer("depth", 3, 0, 64);
+  }
 
   const JsonNode panes = root.child("panes");
   panes.requireArray();
@@ -176,10 +188,11 @@ nlohmann::json presetToJson(const ViewPreset& p, const std::string& baseDir) {
   j["exposure"] = p.exposure;
   j["ui_scale"] = p.uiScale;
   j["pane_count"] = p.paneCount;
+  j["structure"] = {{"show", p.showStructure}, {"depth", p.structureDepth}};
   j["panes"] = json::array();
   for (int i = 0; i < static_cast<int>(p.panes.size()) && i < kMaxPanes; ++i) {
     const PaneSetup& pane = p.panes[static_cast<size_t>(i)];
-    json pj{{"technique", pane.technique}, {"accelerator", pane.accelerator}, {"spp", pane.spp}};
+    json pj{{"technique", pane.technique}, {"accelerator", pane.accelerator}, {"spp", pane.spp}, {"view", pane.view}};
     pj["params"] = pane.techniqueParams;
     pj["accel_params"] = pane.accelParams;
     j["panes"].push_back(pj);

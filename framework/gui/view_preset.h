@@ -24,6 +24,7 @@ struct PaneSetup {
   std::map<std::string, std::string> techniqueParams;  // name -> value as written; missing = default
   std::map<std::string, std::string> accelParams;
   int spp = 16;  // passes of progressive refinement (samples per pixel)
+  std::string view = "image";  // image | nodes | primitives (the accelerator's cost per pixel)
 };
 
 enum class CompareMode { SideBySide, Wipe, Difference };
@@ -47,6 +48,8 @@ struct ViewPreset {
   CompareSetup compare;
   float uiScale = 1.0f;          // multiplies the monitor's content scale
   float exposure = 0.0f;         // display exposure in stops
+  bool showStructure = false;    // the accelerators' nodes drawn over the panes
+  int structureDepth = 3;        // at this depth (root = 0)
 };
 
 // Reads a preset, validating every name and value against the registries

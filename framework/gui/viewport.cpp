@@ -12,6 +12,8 @@
 
 #include "core/error.h"
 #include "core/image.h"
+#include "gui/app_actions.h"
+#include "gui/structure_overlay.h"
 #include "gui/view_camera.h"
 #include "modules/registry.h"
 
@@ -93,7 +95,13 @@ std::vector<std::string> paneCaption(const AppState& app, int index) {
   const PaneState& p = app.panes[static_cast<size_t>(index)];
   const PaneSnapshot& s = p.shown;
   std::vector<std::string> lines;
-  lines.push_back(std::string(1, paneLetter(index)) + "  " + p.technique + "  /  " + p.accelerator);
+  if (s.view != PaneView::Image) {
+    lines.push_back(std::string(1, paneLetter(index)) + "  " + p.accelerator + ": " +
+                    (s.view == PaneView::NodesVisited ? "nodes visited" : "primitives tested") +
+                    " per camera ray");
+  } else {
+    lines.push_back(std::string(1, paneLetter(index)) + "  " + p.technique + "  /  " + p.accelerator);
+  }
   char buf[160];
   switch (s.phase) {
     case PaneSnapshot::Phase::Building:
@@ -127,7 +135,7 @@ std::vector<std::string> paneCaption(const AppState& app, int index) {
                   p.error.ssim);
     lines.emplace_back(buf);
   }
-  if (app.scene) {
+  if (app.scene && s.view == PaneView::Image) {
     const EffectSet missed = app.scene->effects.minus(findTechnique(p.technique).simulates);
     if (!missed.empty()) lines.push_back("misses: " + joinNames(missed.names()));
   }
@@ -159,7 +167,8 @@ void uploadFinished(AppState& app) {
   }
 }
 
-void drawLegend(ImDrawList* dl, Rect r, const DiffState& diff) {
+// A colour bar from 0 to maxValue under the text labels 0, max/2 and max.
+void drawLegend(ImDrawList* dl, Rect r, float maxValue, bool automatic) {
   const float barH = 14.0f * ImGui::GetIO().FontGlobalScale;
   const int segments = 64;
   for (int i = 0; i < segments; ++i) {
@@ -170,11 +179,33 @@ void drawLegend(ImDrawList* dl, Rect r, const DiffState& diff) {
   char buf[64];
   const float ty = r.y + barH + 2.0f;
   dl->AddText(ImVec2(r.x, ty), IM_COL32_WHITE, "0");
-  std::snprintf(buf, sizeof buf, "%.3g", static_cast<double>(diff.usedMax) / 2);
+  std::snprintf(buf, sizeof buf, "%.3g", static_cast<double>(maxValue) / 2);
   dl->AddText(ImVec2(r.x + r.w / 2 - ImGui::CalcTextSize(buf).x / 2, ty), IM_COL32_WHITE, buf);
-  std::snprintf(buf, sizeof buf, "%.3g%s", static_cast<double>(diff.usedMax), diff.requestedMax <= 0 ? " (auto, 99th pct)" : "");
+  std::snprintf(buf, sizeof buf, "%.3g%s", static_cast<double>(maxValue), automatic ? " (auto, 99th pct)" : "");
   dl->AddText(ImVec2(r.x + r.w - ImGui::CalcTextSize(buf).x, ty), IM_COL32_WHITE, buf);
 }
+
+// The structure overlay of pane `i` over its image rectangle r.
+void drawPaneStructure(ImDrawList* dl, AppState& app, int i, Rect r, float bottomMargin) {
+  PaneState& p = app.panes[static_cast<size_t>(i)];
+  const auto accel = p.renderer->accelerator();
+  if (!accel) return;
+  if (accel != p.overlayAccel || app.structureDepth != p.overlayDepth) {
+    p.overlayAccel = accel;
+    p.overlayDepth = app.structureDepth;
+    p.overlayNodes = accel->nodesAtDepth(app.structureDepth);
+  }
+  const Camera camera = renderCamera(*app.scene, renderSettings(app, p));
+  const int hidden = drawStructure(dl, camera, p.overlayNodes, r.x, r.y, r.w, r.h);
+  char buf[96];
+  if (p.overlayNodes.empty())
+    std::snprintf(buf, sizeof buf, "%s has no nodes to draw", p.accelerator.c_str());
+  else
+    std::snprintf(buf, sizeof buf, "%zu nodes at depth %d%s", p.overlayNodes.size(), app.structureDepth,
+                  hidden > 0 ? " (first 4000 drawn)" : "");
+  captionBox(dl, r.x, r.y + r.h - bottomMargin, {buf}, IM_COL32(0, 0, 0, 170), r.w, Anchor::Bottom);
+}
+
 
 Rect compareArea(const AppState& app, Rect area) {
   const PaneState& a = app.panes[static_cast<size_t>(app.compare.paneA)];
@@ -224,6 +255,13 @@ void drawViewportContent(AppState& app, float x, float y, float w, float h) {
                                        : fitImage(cell, 1, 1, 6.0f);
       if (p.texture.valid()) dl->AddImage(p.texture.imguiId(), ImVec2(r.x, r.y), ImVec2(r.x + r.w, r.y + r.h));
       app.paneRects[static_cast<size_t>(i)] = {r.x, r.y, r.w, r.h};
+      const float lh = p.texture.valid() && p.texture.legendMax() > 0.0f ? 34.0f * ImGui::GetIO().FontGlobalScale : 0.0f;
+      if (lh > 0.0f) {
+        dl->AddRectFilled(ImVec2(r.x, r.y + r.h - lh), ImVec2(r.x + r.w, r.y + r.h), IM_COL32(0, 0, 0, 190));
+        app.overlayRects.push_back({r.x, r.y + r.h - lh, r.w, lh});
+        drawLegend(dl, {r.x + 6.0f, r.y + r.h - lh + 2.0f, r.w - 12.0f, lh}, p.texture.legendMax(), true);
+      }
+      if (app.showStructure && app.scene) drawPaneStructure(dl, app, i, r, lh);
       captionBox(dl, r.x, r.y, paneCaption(app, i), IM_COL32(0, 0, 0, 170), r.w);
       paneBanners(dl, p, r);
     }
@@ -264,7 +302,7 @@ void drawViewportContent(AppState& app, float x, float y, float w, float h) {
   const bool diffCurrent = app.diff.valid && app.diff.panes[0] == ia && app.diff.panes[1] == ib;
   if (diffCurrent) {
     dl->AddImage(app.diff.texture.imguiId(), ImVec2(r.x, r.y), ImVec2(r.x + r.w, r.y + r.h));
-    drawLegend(dl, {r.x, r.y + r.h + 6.0f, r.w, 30.0f}, app.diff);
+    drawLegend(dl, {r.x, r.y + r.h + 6.0f, r.w, 30.0f}, app.diff.usedMax, app.diff.requestedMax <= 0);
   }
   char title[200];
   std::snprintf(title, sizeof title, "%s error of %c (%s) against %c (%s)",

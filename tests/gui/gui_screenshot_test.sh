@@ -3,7 +3,7 @@
 # screenshots once every pane has finished, and check that each pane shows
 # what a headless render of the same technique shows, that the wipe puts A
 # left and B right of its split, and that the difference view is the heatmap
-# of A against B.
+# of A against B; and that the cost view and the structure overlay appear.
 #   gui_screenshot_test.sh LIGHTLAB CHECKER OUT_DIR
 set -euo pipefail
 LL=$1 CHECK=$2 OUT=$3
@@ -24,6 +24,8 @@ shot() {  # preset name -> OUT/name.png (+ .json)
 shot two_panes
 shot wipe
 shot difference
+shot structure
+shot cost
 
 "$CHECK" "$OUT/two_panes.png" pane 0 "$OUT/a.pfm"
 "$CHECK" "$OUT/two_panes.png" pane 1 "$OUT/b.pfm"
@@ -32,6 +34,13 @@ shot difference
 "$CHECK" "$OUT/difference.png" diff "$OUT/a.pfm" "$OUT/b.pfm"
 "$CHECK" "$OUT/wipe.png" differs "$OUT/two_panes.png"
 "$CHECK" "$OUT/difference.png" differs "$OUT/wipe.png"
+# The cost view is the CLI's heatmap; the structure overlay drew the BVH's nodes.
+"$LL" --quiet render data/scenes/bunny.json -a bvh --width 160 --height 160 --cost nodes -o "$OUT/cost_cli.png" >/dev/null
+"$CHECK" "$OUT/cost.png" pane 0 "$OUT/cost_cli.png"
+"$CHECK" "$OUT/structure.png" differs "$OUT/cost.png"
+python3 -c "import json,sys; p=json.load(open('$OUT/structure.json'))['panes'][1]; sys.exit(0 if p['structure_nodes'] > 4 else 1)" \
+  || { echo "FAIL: no structure overlay drawn"; exit 1; }
+echo "ok: cost view and structure overlay"
 # The checker itself must catch a wrong picture: pane 1 is not the 16-sample render.
 if "$CHECK" "$OUT/two_panes.png" pane 1 "$OUT/a.pfm" >/dev/null; then
   echo "FAIL: the checker accepted the wrong reference"; exit 1
