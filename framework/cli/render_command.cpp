@@ -12,6 +12,9 @@
 #include "cli/scene_setup.h"
 #include "core/error.h"
 #include "core/progress.h"
+#ifdef LIGHTLAB_HAVE_GUI
+#include "gpu/offscreen_gl.h"
+#endif
 #include "render/cost_image.h"
 #include "render/render_job.h"
 
@@ -86,6 +89,9 @@ Command addRenderCommand(CLI::App& app, const GlobalOptions& global) {
                   scale > 0 ? (", colour scale 0-" + std::to_string(static_cast<int>(scale))).c_str() : "");
       return;
     }
+#ifdef LIGHTLAB_HAVE_GUI
+    if (s.technique->gpu) gpu::OffscreenGl::createForCommandLine();
+#endif
     const auto technique = s.technique->make();
     RenderJob job(s.scene, *s.accel, *technique, s.techniqueParams, settings);
     ProgressBar bar("render " + o->technique, 1.0, global.quiet);

@@ -41,6 +41,7 @@ void waitPanes(AppState& app) {
 // Tiny renders (32 x 24, one pass) so the tests stay fast.
 void makeSmall(AppState& app) {
   initPanes(app);
+  for (int i = 0; i < kMaxPanes; ++i) setTechnique(app, i, "raycast");  // headless: no GPU techniques
   app.width = 32;
   app.height = 24;
   for (PaneState& p : app.panes) p.spp = 1;
@@ -223,6 +224,7 @@ bool sameAsHeadless(const AppState& app, int pane, const PaneSnapshot& s) {
 TEST(AppActions, EveryImageAfterACameraMoveShowsTheNewView) {
   AppState app;
   initPanes(app);
+  for (int i = 0; i < kMaxPanes; ++i) setTechnique(app, i, "raycast");  // headless: no GPU techniques
   app.width = 128;
   app.height = 128;
   for (PaneState& p : app.panes) p.spp = 4;

@@ -19,6 +19,7 @@
 #include "backends/imgui_impl_opengl3.h"
 
 #include "core/error.h"
+#include "gpu/offscreen_gl.h"
 #include "gui/app_actions.h"
 #include "gui/screenshot.h"
 #include "gui/side_panel.h"
@@ -164,12 +165,15 @@ int runGui(const GuiOptions& options) {
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   ImGui_ImplOpenGL3_Init("#version 330");
   ImGui_ImplOpenGL3_CreateDeviceObjects();  // before applyUiScale replaces the font texture
+  std::string gpuWhy;
+  const bool gpu = gpu::OffscreenGl::create(&gpuWhy);  // for GPU techniques on the pane workers
 
   int exitStatus = 0;
   {
     AppState app;
     app.sceneFiles = findSceneFiles(options.sceneFolders.empty() ? defaultSceneFolders() : options.sceneFolders);
     initPanes(app);
+    if (!gpu) addMessage(app, "GPU techniques unavailable: " + gpuWhy);
     glfwSetWindowUserPointer(window, &app);
     glfwSetDropCallback(window, onDrop);
     float xs = 1.0f, ys = 1.0f;
@@ -248,6 +252,7 @@ int runGui(const GuiOptions& options) {
     }
     for (PaneState& p : app.panes) p.renderer.reset();  // join workers while the GL context still exists
   }
+  gpu::OffscreenGl::destroy();
   ImGui_ImplOpenGL3_Shutdown();
   ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();

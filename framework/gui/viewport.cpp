@@ -114,7 +114,7 @@ std::vector<std::string> paneCaption(const AppState& app, int index) {
         break;
       }
       const double rays = static_cast<double>(s.stats.work.totalRays());
-      const std::string rate = s.passes > 0 && s.seconds > 0 ? "  " + formatRate(rays / s.seconds) : "";
+      const std::string rate = s.passes > 0 && s.seconds > 0 && rays > 0 ? "  " + formatRate(rays / s.seconds) : "";
       std::snprintf(buf, sizeof buf, "pass %d/%d  %.2f s%s%s", s.passes, s.totalPasses, s.elapsed(), rate.c_str(),
                     s.phase == PaneSnapshot::Phase::Done ? "  done" : "");
       lines.emplace_back(buf);

@@ -9,10 +9,17 @@
 #define LIGHTLAB_EMBREE_ACCELERATOR(X)
 #endif
 
+#ifdef LIGHTLAB_HAVE_GPU
+#define LIGHTLAB_GPU_TECHNIQUES(X) X(blinnPhongGlTechnique)
+#else
+#define LIGHTLAB_GPU_TECHNIQUES(X)
+#endif
+
 #define LIGHTLAB_ACCELERATORS(X) \
   X(bruteForceAccelerator)       \
   X(bvhAccelerator)              \
   LIGHTLAB_EMBREE_ACCELERATOR(X)
 
 #define LIGHTLAB_TECHNIQUES(X) \
-  X(raycastTechnique)
+  X(raycastTechnique)          \
+  LIGHTLAB_GPU_TECHNIQUES(X)

@@ -49,7 +49,7 @@ const TechniqueInfo& findTechnique(const std::string& name) {
 const TechniqueInfo* cheapestTechniqueFor(EffectSet needed) {
   const TechniqueInfo* best = nullptr;
   for (const auto& t : techniques())
-    if (t.simulates.contains(needed) && (!best || t.cost < best->cost)) best = &t;
+    if (!t.gpu && t.simulates.contains(needed) && (!best || t.cost < best->cost)) best = &t;  // GPU ones need a display
   return best;
 }
 

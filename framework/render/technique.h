@@ -93,6 +93,7 @@ struct TechniqueInfo {
   int cost = 0;         // rough cost rank, for "cheapest technique that simulates all"
   std::vector<ParamDecl> params;
   std::unique_ptr<Technique> (*make)() = nullptr;
+  bool gpu = false;  // renders with OpenGL on the offscreen context (gpu/offscreen_gl.h): the GUI sets it up
 };
 
 }  // namespace ll

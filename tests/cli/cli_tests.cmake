@@ -72,6 +72,9 @@ if(LIGHTLAB_WITH_GUI)
   add_test(NAME cli.error.gui_without_display
            COMMAND env -u DISPLAY bash ${EXPECT_ERROR} "cannot open a window \\(GLFW error [0-9]+: .*DISPLAY.*\\); without a display use"
                    "" -- ${LL} gui ${SCENES}/cornell_box.json)
+  add_test(NAME cli.error.gpu_technique_without_display
+           COMMAND env -u DISPLAY bash ${EXPECT_ERROR} "renders with OpenGL and needs a display \\(GLFW error"
+                   ${OUT}/gpu.png -- ${LL} render ${SCENES}/cornell_box.json -t blinn-phong-gl -o ${OUT}/gpu.png)
   lightlab_error_test(gui_missing_preset "nope\\.json: cannot open preset file" gui --preset ${SCENES}/nope.json)
   lightlab_error_test(gui_missing_scene "nope\\.json: cannot open file" gui ${SCENES}/nope.json)
   lightlab_error_test(gui_scene_as_preset "cornell_box\\.json:1:1: not a LightLab view preset: it needs \"lightlab_preset\": 1"

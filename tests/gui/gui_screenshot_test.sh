@@ -26,6 +26,7 @@ shot wipe
 shot difference
 shot structure
 shot cost
+shot gpu_twin
 
 "$CHECK" "$OUT/two_panes.png" pane 0 "$OUT/a.pfm"
 "$CHECK" "$OUT/two_panes.png" pane 1 "$OUT/b.pfm"
@@ -41,6 +42,13 @@ shot cost
 python3 -c "import json,sys; p=json.load(open('$OUT/structure.json'))['panes'][1]; sys.exit(0 if p['structure_nodes'] > 4 else 1)" \
   || { echo "FAIL: no structure overlay drawn"; exit 1; }
 echo "ok: cost view and structure overlay"
+# The GPU twin shades like ray casting where nothing casts shadows (a lone lit sphere).
+"$LL" --quiet render data/scenes/tests/sphere_point_light.json -t raycast -a bvh --set intersection=framework \
+  --width 160 --height 160 -o "$OUT/sphere.pfm" >/dev/null
+python3 -c "import json,sys; p=json.load(open('$OUT/gpu_twin.json'))['panes'][1]; sys.exit(0 if p['phase'] == 'done' and not p['error'] else 1)" \
+  || { echo "FAIL: the GPU twin did not render"; exit 1; }
+"$CHECK" "$OUT/gpu_twin.png" pane 1 "$OUT/sphere.pfm"
+echo "ok: the GPU twin matches ray casting"
 # The checker itself must catch a wrong picture: pane 1 is not the 16-sample render.
 if "$CHECK" "$OUT/two_panes.png" pane 1 "$OUT/a.pfm" >/dev/null; then
   echo "FAIL: the checker accepted the wrong reference"; exit 1
