@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "core/ray.h"
+#include "render/student_task.h"
 
 namespace ll::testing_support {
 
@@ -32,6 +33,20 @@ inline Ray makeRay(Vec3 origin, Vec3 dir, float tmin = 0.0f, float tmax = kInfin
   r.tmin = tmin;
   r.tmax = tmax;
   return r;
+}
+
+// Success if calling `probe` did not run the stub of task `id`.
+template <class F>
+testing::AssertionResult implemented(const char* id, F&& probe) {
+  TaskLog log;
+  {
+    const ScopedTaskLog scope(&log);
+    probe();
+  }
+  const auto missing = log.missing();
+  const auto it = missing.find(id);
+  if (it == missing.end()) return testing::AssertionSuccess();
+  return testing::AssertionFailure() << id << " not implemented (" << it->second << ")";
 }
 
 }  // namespace ll::testing_support

@@ -35,19 +35,7 @@ using DVec3 = glm::dvec3;
 
 const std::string kTestScenes = std::string(LIGHTLAB_DATA_DIR) + "/scenes/tests/";
 
-// Success if calling `probe` did not run the stub of task `id`.
-template <class F>
-testing::AssertionResult implemented(const char* id, F&& probe) {
-  TaskLog log;
-  {
-    const ScopedTaskLog scope(&log);
-    probe();
-  }
-  const auto missing = log.missing();
-  const auto it = missing.find(id);
-  if (it == missing.end()) return testing::AssertionSuccess();
-  return testing::AssertionFailure() << id << " not implemented (" << it->second << ")";
-}
+using testing_support::implemented;
 
 std::string missingTasks(const RenderStats& stats) {
   std::string out;

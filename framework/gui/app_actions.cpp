@@ -132,32 +132,34 @@ void openDroppedFile(AppState& app, const std::string& path) {
     openScene(app, path);
 }
 
-void setTechnique(AppState& app, int paneIndex, const std::string& name) {
-  PaneState& pane = app.panes.at(static_cast<size_t>(paneIndex));
+namespace {
+// Switches a pane's module (technique or accelerator) by name, keeping the
+// parameter values the new module also declares.
+template <class Info>
+void switchModule(AppState& app, const std::string& name, const Info& (*find)(const std::string&),
+                  const char* kind, std::string& current, ParamSet& params, bool& dirty) {
   try {
-    const TechniqueInfo& info = findTechnique(name);
-    ParamSet params("technique '" + info.name + "'", info.params);
-    carryOver(pane.techniqueParams, params);
-    pane.technique = info.name;
-    pane.techniqueParams = std::move(params);
-    pane.dirty = true;
+    const Info& info = find(name);
+    ParamSet next(std::string(kind) + " '" + info.name + "'", info.params);
+    carryOver(params, next);
+    current = info.name;
+    params = std::move(next);
+    dirty = true;
   } catch (const UserError& e) {
     addMessage(app, e.what());
   }
 }
+}  // namespace
+
+void setTechnique(AppState& app, int paneIndex, const std::string& name) {
+  PaneState& pane = app.panes.at(static_cast<size_t>(paneIndex));
+  switchModule<TechniqueInfo>(app, name, &findTechnique, "technique", pane.technique, pane.techniqueParams, pane.dirty);
+}
 
 void setAccelerator(AppState& app, int paneIndex, const std::string& name) {
   PaneState& pane = app.panes.at(static_cast<size_t>(paneIndex));
-  try {
-    const AcceleratorInfo& info = findAccelerator(name);
-    ParamSet params("accelerator '" + info.name + "'", info.params);
-    carryOver(pane.accelParams, params);
-    pane.accelerator = info.name;
-    pane.accelParams = std::move(params);
-    pane.dirty = true;
-  } catch (const UserError& e) {
-    addMessage(app, e.what());
-  }
+  switchModule<AcceleratorInfo>(app, name, &findAccelerator, "accelerator", pane.accelerator, pane.accelParams,
+                                pane.dirty);
 }
 
 void applyPreset(AppState& app, const ViewPreset& preset) {
