@@ -31,7 +31,8 @@ namespace ll {
 
 namespace {
 
-constexpr int kMaxLights = 64;  // 3 x 64 vec4 uniforms: within GL 3.3's minimum of 1024 components per stage
+constexpr int kMaxLights =
+    64;  // 3 x 64 vec4 uniforms: within GL 3.3's minimum of 1024 components per stage
 
 // The lights' diffuse and specular sums D and S at a point, shared by the
 // vertex shader (Gouraud) and the fragment shader (flat, Phong), so a texture
@@ -132,15 +133,18 @@ struct Mesh {
 void addSphere(std::vector<Vertex>& out, const Sphere& s, int segments) {
   const int rings = std::max(segments / 2, 4);
   const auto vertex = [&](int i, int j) {
-    const float theta = kPi * static_cast<float>(j) / static_cast<float>(rings) - kPi / 2;  // latitude
+    const float theta =
+        kPi * static_cast<float>(j) / static_cast<float>(rings) - kPi / 2;  // latitude
     const float phi = 2.0f * kPi * static_cast<float>(i) / static_cast<float>(segments);
     const Vec3 n(std::cos(theta) * std::cos(phi), std::sin(theta), std::cos(theta) * std::sin(phi));
     return Vertex{s.center + s.radius * n, n,
-                  Vec2(static_cast<float>(i) / static_cast<float>(segments), static_cast<float>(j) / static_cast<float>(rings))};
+                  Vec2(static_cast<float>(i) / static_cast<float>(segments),
+                       static_cast<float>(j) / static_cast<float>(rings))};
   };
   for (int j = 0; j < rings; ++j)
     for (int i = 0; i < segments; ++i) {
-      const Vertex a = vertex(i, j), b = vertex(i + 1, j), c = vertex(i + 1, j + 1), d = vertex(i, j + 1);
+      const Vertex a = vertex(i, j), b = vertex(i + 1, j), c = vertex(i + 1, j + 1),
+                   d = vertex(i, j + 1);
       out.insert(out.end(), {a, c, b, a, d, c});
     }
 }
@@ -156,7 +160,8 @@ Mesh buildMesh(const Scene& scene, int sphereSegments) {
         continue;
       }
       const glm::uvec3& t = g.triangles[prim];
-      const Vec3 face = glm::normalize(glm::cross(g.positions[t.y] - g.positions[t.x], g.positions[t.z] - g.positions[t.x]));
+      const Vec3 face = glm::normalize(
+          glm::cross(g.positions[t.y] - g.positions[t.x], g.positions[t.z] - g.positions[t.x]));
       for (uint32_t k : {t.x, t.y, t.z})
         mesh.vertices.push_back({g.positions[k], g.normals.empty() ? face : g.normals[k],
                                  g.uvs.empty() ? Vec2(0.0f) : g.uvs[k]});
@@ -181,17 +186,21 @@ std::vector<GlLight> lightsOf(const Scene& scene, int areaSamples) {
       lights.push_back({glm::vec4(-glm::normalize(l.direction), 0.0f), Vec3(0.0f), l.intensity});
   }
   // Area lights: the centres of an n x n grid over the light's sample square.
-  const int n = std::max(1, static_cast<int>(std::lround(std::sqrt(static_cast<double>(areaSamples)))));
+  const int n =
+      std::max(1, static_cast<int>(std::lround(std::sqrt(static_cast<double>(areaSamples)))));
   for (const AreaLight& a : scene.areaLights)
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i) {
-        const LightPoint p = scene.sampleAreaLight(
-            a, Vec2((static_cast<float>(i) + 0.5f) / static_cast<float>(n), (static_cast<float>(j) + 0.5f) / static_cast<float>(n)));
-        lights.push_back({glm::vec4(p.position, 2.0f), p.normal, a.emission * (a.area / static_cast<float>(n * n))});
+        const LightPoint p =
+            scene.sampleAreaLight(a, Vec2((static_cast<float>(i) + 0.5f) / static_cast<float>(n),
+                                          (static_cast<float>(j) + 0.5f) / static_cast<float>(n)));
+        lights.push_back({glm::vec4(p.position, 2.0f), p.normal,
+                          a.emission * (a.area / static_cast<float>(n * n))});
       }
   if (lights.size() > static_cast<size_t>(kMaxLights))
-    throwUserError("blinn-phong-gl: the scene needs " + std::to_string(lights.size()) + " point lights (at most " +
-                   std::to_string(kMaxLights) + "); lower light_samples");
+    throwUserError("blinn-phong-gl: the scene needs " + std::to_string(lights.size()) +
+                   " point lights (at most " + std::to_string(kMaxLights) +
+                   "); lower light_samples");
   return lights;
 }
 
@@ -225,8 +234,8 @@ class BlinnPhongGl final : public Technique {
     glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, w, h);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
     if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-      throwUserError("blinn-phong-gl: the GPU cannot make a " + std::to_string(w) + "x" + std::to_string(h) +
-                     " float framebuffer; lower samples or the size");
+      throwUserError("blinn-phong-gl: the GPU cannot make a " + std::to_string(w) + "x" +
+                     std::to_string(h) + " float framebuffer; lower samples or the size");
 
     glGenVertexArrays(1, &vao);
     glBindVertexArray(vao);
@@ -235,17 +244,21 @@ class BlinnPhongGl final : public Technique {
     glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh.vertices.size() * sizeof(Vertex)),
                  mesh.vertices.data(), GL_STATIC_DRAW);
     glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, position)));
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex),
+                          reinterpret_cast<void*>(offsetof(Vertex, position)));
     glEnableVertexAttribArray(1);
-    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, normal)));
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex),
+                          reinterpret_cast<void*>(offsetof(Vertex, normal)));
     glEnableVertexAttribArray(2);
-    glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, uv)));
+    glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, sizeof(Vertex),
+                          reinterpret_cast<void*>(offsetof(Vertex, uv)));
 
     // Camera: the scene's pinhole; depth range from the scene's bounds.
     const Bounds3 bounds = ctx.scene.geometry.sceneBounds();
     const float reach = glm::length(bounds.center() - camera.eye) + bounds.diagonal();
     const glm::mat4 view = glm::lookAt(camera.eye, camera.target, camera.up);
-    const glm::mat4 projection = glm::perspective(glm::radians(camera.fovYDeg), camera.aspect(), reach * 1e-5f, reach);
+    const glm::mat4 projection =
+        glm::perspective(glm::radians(camera.fovYDeg), camera.aspect(), reach * 1e-5f, reach);
     const glm::mat4 viewProjection = projection * view;
 
     glViewport(0, 0, w, h);
@@ -254,16 +267,20 @@ class BlinnPhongGl final : public Technique {
     glEnable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);
     glUseProgram(program.id());
-    glUniformMatrix4fv(program.uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
+    glUniformMatrix4fv(program.uniform("uViewProjection"), 1, GL_FALSE,
+                       glm::value_ptr(viewProjection));
     glUniform3fv(program.uniform("uEye"), 1, glm::value_ptr(camera.eye));
     const std::string shading = p.getChoice("shading");
     glUniform1i(program.uniform("uShading"), shading == "flat" ? 0 : shading == "gouraud" ? 1 : 2);
     glUniform1i(program.uniform("uLightCount"), static_cast<GLint>(lights.size()));
     for (size_t i = 0; i < lights.size(); ++i) {
       const std::string idx = "[" + std::to_string(i) + "]";
-      glUniform4fv(program.uniform(("uLightPosition" + idx).c_str()), 1, glm::value_ptr(lights[i].position));
-      glUniform3fv(program.uniform(("uLightNormal" + idx).c_str()), 1, glm::value_ptr(lights[i].normal));
-      glUniform3fv(program.uniform(("uLightIntensity" + idx).c_str()), 1, glm::value_ptr(lights[i].intensity));
+      glUniform4fv(program.uniform(("uLightPosition" + idx).c_str()), 1,
+                   glm::value_ptr(lights[i].position));
+      glUniform3fv(program.uniform(("uLightNormal" + idx).c_str()), 1,
+                   glm::value_ptr(lights[i].normal));
+      glUniform3fv(program.uniform(("uLightIntensity" + idx).c_str()), 1,
+                   glm::value_ptr(lights[i].intensity));
     }
     glUniform3fv(program.uniform("uAmbient"), 1, glm::value_ptr(ctx.scene.ambient));
     glUniform1i(program.uniform("uTexture"), 0);
@@ -277,7 +294,9 @@ class BlinnPhongGl final : public Technique {
       glUniform3fv(program.uniform("uKs"), 1, glm::value_ptr(m.ks));
       glUniform3fv(program.uniform("uEmission"), 1, glm::value_ptr(m.emission));
       glUniform1f(program.uniform("uShininess"), m.shininess);
-      const int kind = m.texture.kind == Texture::Kind::Image ? 1 : m.texture.kind == Texture::Kind::Checker ? 2 : 0;
+      const int kind = m.texture.kind == Texture::Kind::Image     ? 1
+                       : m.texture.kind == Texture::Kind::Checker ? 2
+                                                                  : 0;
       glUniform1i(program.uniform("uTextureKind"), kind);
       if (kind == 2) {
         glUniform2fv(program.uniform("uSquares"), 1, glm::value_ptr(m.texture.squares));
@@ -296,11 +315,15 @@ class BlinnPhongGl final : public Technique {
         textures.push_back(tex);
         glActiveTexture(GL_TEXTURE0);
         glBindTexture(GL_TEXTURE_2D, tex);
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB32F, img.width(), img.height(), 0, GL_RGB, GL_FLOAT, flipped.data());
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB32F, img.width(), img.height(), 0, GL_RGB, GL_FLOAT,
+                     flipped.data());
         glGenerateMipmap(GL_TEXTURE_2D);
-        const GLint minFilter = filter == "nearest" ? GL_NEAREST : filter == "bilinear" ? GL_LINEAR : GL_LINEAR_MIPMAP_LINEAR;
+        const GLint minFilter = filter == "nearest"    ? GL_NEAREST
+                                : filter == "bilinear" ? GL_LINEAR
+                                                       : GL_LINEAR_MIPMAP_LINEAR;
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, minFilter);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter == "nearest" ? GL_NEAREST : GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER,
+                        filter == "nearest" ? GL_NEAREST : GL_LINEAR);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
       }
@@ -327,7 +350,8 @@ class BlinnPhongGl final : public Technique {
         for (int sy = 0; sy < scale; ++sy)
           for (int sx = 0; sx < scale; ++sx) {
             const size_t row = static_cast<size_t>(h - 1 - (y * scale + sy));
-            const float* px = &pixels[(row * static_cast<size_t>(w) + static_cast<size_t>(x * scale + sx)) * 4];
+            const float* px =
+                &pixels[(row * static_cast<size_t>(w) + static_cast<size_t>(x * scale + sx)) * 4];
             sum += Rgb(px[0], px[1], px[2]);
           }
         Rgb value = sum * norm;
@@ -341,16 +365,23 @@ class BlinnPhongGl final : public Technique {
 
 TechniqueInfo blinnPhongGlTechnique() {
   return {"blinn-phong-gl",
-          "the Blinn-Phong rasterizer on the GPU (OpenGL 3.3, GUI only): the twin of blinn-phong, to wipe and diff",
-          EffectSet{Effect::DirectLighting, Effect::GlossyHighlights, Effect::Textures, Effect::Emission},
+          "the Blinn-Phong rasterizer on the GPU (OpenGL 3.3, GUI only): the twin of blinn-phong, "
+          "to wipe and diff",
+          EffectSet{Effect::DirectLighting, Effect::GlossyHighlights, Effect::Textures,
+                    Effect::Emission},
           0,
           {ParamDecl::choice("shading", "phong", {"flat", "phong"},
-                             "flat: one normal per triangle (from screen derivatives); phong: interpolated normals, lit per pixel"),
-           ParamDecl::choice("samples", "1", {"1", "4", "16"}, "supersamples per pixel (ordered grid 1x1, 2x2, 4x4)"),
+                             "flat: one normal per triangle (from screen derivatives); phong: "
+                             "interpolated normals, lit per pixel"),
+           ParamDecl::choice("samples", "1", {"1", "4", "16"},
+                             "supersamples per pixel (ordered grid 1x1, 2x2, 4x4)"),
            ParamDecl::choice("filter", "trilinear", {"nearest", "bilinear", "trilinear"},
                              "texture filtering (trilinear uses mipmaps)"),
-           ParamDecl::integer("light_samples", 16, 1, 64, "point lights per area light (rounded to a square grid; at most 64 lights in all)"),
-           ParamDecl::integer("sphere_segments", 48, 8, 256, "tessellation of spheres around the equator")},
+           ParamDecl::integer(
+               "light_samples", 16, 1, 64,
+               "point lights per area light (rounded to a square grid; at most 64 lights in all)"),
+           ParamDecl::integer("sphere_segments", 48, 8, 256,
+                              "tessellation of spheres around the equator")},
           []() -> std::unique_ptr<Technique> { return std::make_unique<BlinnPhongGl>(); },
           true};
 }

@@ -52,8 +52,12 @@ GlProgram::GlProgram(const std::string& vertexSource, const std::string& fragmen
   }
 }
 
-GlProgram::~GlProgram() { glDeleteProgram(id_); }
+GlProgram::~GlProgram() {
+  glDeleteProgram(id_);
+}
 
-int GlProgram::uniform(const char* name) const { return glGetUniformLocation(id_, name); }
+int GlProgram::uniform(const char* name) const {
+  return glGetUniformLocation(id_, name);
+}
 
 }  // namespace ll::gpu

@@ -39,7 +39,8 @@ void OffscreenGl::createForCommandLine() {
   });
   std::string why;
   if (!glfwInit() || !create(&why))
-    throwUserError("this technique renders with OpenGL and needs a display (" + (glfwError.empty() ? why : glfwError) +
+    throwUserError("this technique renders with OpenGL and needs a display (" +
+                   (glfwError.empty() ? why : glfwError) +
                    "); under a headless server use xvfb-run");
 }
 
@@ -50,10 +51,14 @@ bool OffscreenGl::available() {
 
 OffscreenGl::Lease::Lease() : lock_(gMutex) {
   if (!gWindow)
-    throwUserError("this technique renders with OpenGL: it needs a display (lightlab gui, or the CLI with DISPLAY set)");
+    throwUserError(
+        "this technique renders with OpenGL: it needs a display (lightlab gui, or the CLI with "
+        "DISPLAY set)");
   glfwMakeContextCurrent(gWindow);
 }
 
-OffscreenGl::Lease::~Lease() { glfwMakeContextCurrent(nullptr); }
+OffscreenGl::Lease::~Lease() {
+  glfwMakeContextCurrent(nullptr);
+}
 
 }  // namespace ll::gpu

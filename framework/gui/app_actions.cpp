@@ -60,9 +60,12 @@ void initPanes(AppState& app) {
 
 const char* viewName(PaneView view) {
   switch (view) {
-    case PaneView::NodesVisited: return "nodes";
-    case PaneView::PrimitivesTested: return "primitives";
-    case PaneView::Image: break;
+    case PaneView::NodesVisited:
+      return "nodes";
+    case PaneView::PrimitivesTested:
+      return "primitives";
+    case PaneView::Image:
+      break;
   }
   return "image";
 }
@@ -81,12 +84,15 @@ void addMessage(AppState& app, const std::string& text, bool error) {
 void openScene(AppState& app, const std::string& path, bool keepCamera) {
   app.loadingPath = path;
   app.loadKeepsCamera = keepCamera;
-  app.loading = std::async(std::launch::async,
-                           [path]() -> std::shared_ptr<const Scene> { return std::make_shared<Scene>(loadScene(path)); });
+  app.loading = std::async(std::launch::async, [path]() -> std::shared_ptr<const Scene> {
+    return std::make_shared<Scene>(loadScene(path));
+  });
 }
 
 void pollSceneLoad(AppState& app) {
-  if (!app.loading.valid() || app.loading.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
+  if (!app.loading.valid() ||
+      app.loading.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
+    return;
   const std::string path = app.loadingPath;
   app.loadingPath.clear();
   try {
@@ -108,11 +114,10 @@ void pollSceneLoad(AppState& app) {
 }
 
 void watchSceneFile(AppState& app) {
-  static thread_local Clock::time_point lastCheck;
   if (!app.autoReload || app.scenePath.empty() || !app.loadingPath.empty()) return;
   const auto now = Clock::now();
-  if (now - lastCheck < std::chrono::milliseconds(500)) return;
-  lastCheck = now;
+  if (now - app.lastWatch < std::chrono::milliseconds(500)) return;
+  app.lastWatch = now;
   const auto t = writeTime(app.scenePath);
   if (t != fs::file_time_type{} && t != app.sceneWriteTime) {
     app.sceneWriteTime = t;
@@ -153,13 +158,14 @@ void switchModule(AppState& app, const std::string& name, const Info& (*find)(co
 
 void setTechnique(AppState& app, int paneIndex, const std::string& name) {
   PaneState& pane = app.panes.at(static_cast<size_t>(paneIndex));
-  switchModule<TechniqueInfo>(app, name, &findTechnique, "technique", pane.technique, pane.techniqueParams, pane.dirty);
+  switchModule<TechniqueInfo>(app, name, &findTechnique, "technique", pane.technique,
+                              pane.techniqueParams, pane.dirty);
 }
 
 void setAccelerator(AppState& app, int paneIndex, const std::string& name) {
   PaneState& pane = app.panes.at(static_cast<size_t>(paneIndex));
-  switchModule<AcceleratorInfo>(app, name, &findAccelerator, "accelerator", pane.accelerator, pane.accelParams,
-                                pane.dirty);
+  switchModule<AcceleratorInfo>(app, name, &findAccelerator, "accelerator", pane.accelerator,
+                                pane.accelParams, pane.dirty);
 }
 
 void applyPreset(AppState& app, const ViewPreset& preset) {
@@ -203,8 +209,8 @@ void applyPreset(AppState& app, const ViewPreset& preset) {
   app.uiScale = preset.uiScale;
   app.showStructure = preset.showStructure;
   app.structureDepth = preset.structureDepth;
-  const bool sameScene = !app.scenePath.empty() && fs::exists(preset.scene) && fs::exists(app.scenePath) &&
-                         fs::equivalent(preset.scene, app.scenePath);
+  const bool sameScene = !app.scenePath.empty() && fs::exists(preset.scene) &&
+                         fs::exists(app.scenePath) && fs::equivalent(preset.scene, app.scenePath);
   if (preset.camera) {
     app.camera = *preset.camera;
     app.cameraChanged = true;
@@ -241,8 +247,10 @@ ViewPreset capturePreset(const AppState& app) {
     s.accelerator = pane.accelerator;
     s.spp = pane.spp;
     s.view = viewName(pane.view);
-    for (const ParamDecl& d : pane.techniqueParams.decls()) s.techniqueParams[d.name] = pane.techniqueParams.text(d.name);
-    for (const ParamDecl& d : pane.accelParams.decls()) s.accelParams[d.name] = pane.accelParams.text(d.name);
+    for (const ParamDecl& d : pane.techniqueParams.decls())
+      s.techniqueParams[d.name] = pane.techniqueParams.text(d.name);
+    for (const ParamDecl& d : pane.accelParams.decls())
+      s.accelParams[d.name] = pane.accelParams.text(d.name);
     p.panes.push_back(s);
   }
   return p;
@@ -283,8 +291,10 @@ RenderSettings renderSettings(const AppState& app, const PaneState& pane) {
   const Camera& sceneCamera = app.scene ? app.scene->camera : app.camera;
   s.width = app.width > 0 ? app.width : sceneCamera.width;
   s.height = app.height > 0 ? app.height : sceneCamera.height;
-  if (app.width > 0 && app.height == 0) s.height = std::max(1, app.width * sceneCamera.height / sceneCamera.width);
-  if (app.height > 0 && app.width == 0) s.width = std::max(1, app.height * sceneCamera.width / sceneCamera.height);
+  if (app.width > 0 && app.height == 0)
+    s.height = std::max(1, app.width * sceneCamera.height / sceneCamera.width);
+  if (app.height > 0 && app.width == 0)
+    s.width = std::max(1, app.height * sceneCamera.width / sceneCamera.height);
   s.spp = pane.spp;
   s.camera = app.camera;
   return s;
@@ -304,7 +314,9 @@ void submitPanes(AppState& app) {
     if (!pane.dirty && !all) continue;
     pane.dirty = false;
     if (!cameraIsValid(app.camera)) {
-      addMessage(app, "the camera is invalid (eye = target, up parallel to the view, or fov outside (0, 180))");
+      addMessage(
+          app,
+          "the camera is invalid (eye = target, up parallel to the view, or fov outside (0, 180))");
       continue;
     }
     RenderRequest r;
@@ -327,12 +339,14 @@ void refreshPanes(AppState& app) {
   // Display bytes of every new image (or after an exposure change).
   for (int i = 0; i < kMaxPanes; ++i) {
     PaneState& pane = app.panes[static_cast<size_t>(i)];
-    if (!pane.shown.image || (pane.encodedVersion == pane.shown.version && pane.encodedExposure == app.exposure))
+    if (!pane.shown.image ||
+        (pane.encodedVersion == pane.shown.version && pane.encodedExposure == app.exposure))
       continue;
     pane.encodedVersion = pane.shown.version;
     pane.encodedExposure = app.exposure;
     bg.post("encode " + std::to_string(i),
-            [image = pane.shown.image, mail = pane.display, e = app.exposure, cost = pane.shown.view != PaneView::Image] {
+            [image = pane.shown.image, mail = pane.display, e = app.exposure,
+             cost = pane.shown.view != PaneView::Image] {
               if (!cost) return mail->put(encodeForDisplay(*image, e));
               float scale = 0.0f;
               DisplayImage d = encodeForDisplay(costHeatmap(*image, 0.0f, &scale), 0.0f);
@@ -349,9 +363,12 @@ void refreshPanes(AppState& app) {
       pane.error = *e;
       pane.hasError = true;
     }
-    const PaneSnapshot* refShot = ref >= 0 && ref < kMaxPanes && i != ref ? &app.panes[static_cast<size_t>(ref)].shown : nullptr;
-    const bool comparable = refShot && pane.shown.image && refShot->image && !pane.shown.preview && !refShot->preview &&
-                            pane.shown.view == PaneView::Image && refShot->view == PaneView::Image &&
+    const PaneSnapshot* refShot = ref >= 0 && ref < kMaxPanes && i != ref
+                                      ? &app.panes[static_cast<size_t>(ref)].shown
+                                      : nullptr;
+    const bool comparable = refShot && pane.shown.image && refShot->image && !pane.shown.preview &&
+                            !refShot->preview && pane.shown.view == PaneView::Image &&
+                            refShot->view == PaneView::Image &&
                             pane.shown.image->width() == refShot->image->width() &&
                             pane.shown.image->height() == refShot->image->height();
     if (!comparable) {
@@ -359,12 +376,14 @@ void refreshPanes(AppState& app) {
       pane.errorVersions[0] = pane.errorVersions[1] = 0;
       continue;
     }
-    if (pane.errorVersions[0] == pane.shown.version && pane.errorVersions[1] == refShot->version) continue;
+    if (pane.errorVersions[0] == pane.shown.version && pane.errorVersions[1] == refShot->version)
+      continue;
     pane.errorVersions[0] = pane.shown.version;
     pane.errorVersions[1] = refShot->version;
-    bg.post("error " + std::to_string(i), [a = pane.shown.image, b = refShot->image, mail = pane.errorMail] {
-      mail->put(compareImages(*a, *b));
-    });
+    bg.post("error " + std::to_string(i),
+            [a = pane.shown.image, b = refShot->image, mail = pane.errorMail] {
+              mail->put(compareImages(*a, *b));
+            });
   }
 
   // The difference heatmap of A against B.
@@ -373,10 +392,12 @@ void refreshPanes(AppState& app) {
   const int a = app.compare.paneA, b = app.compare.paneB;
   const PaneSnapshot& sa = app.panes[static_cast<size_t>(a)].shown;
   const PaneSnapshot& sb = app.panes[static_cast<size_t>(b)].shown;
-  if (!sa.image || !sb.image || sa.image->width() != sb.image->width() || sa.image->height() != sb.image->height())
+  if (!sa.image || !sb.image || sa.image->width() != sb.image->width() ||
+      sa.image->height() != sb.image->height())
     return;
-  if (d.panes[0] == a && d.panes[1] == b && d.versions[0] == sa.version && d.versions[1] == sb.version &&
-      d.mode == app.compare.diff && d.requestedMax == app.compare.diffMax)
+  if (d.panes[0] == a && d.panes[1] == b && d.versions[0] == sa.version &&
+      d.versions[1] == sb.version && d.mode == app.compare.diff &&
+      d.requestedMax == app.compare.diffMax)
     return;
   d.panes[0] = a;
   d.panes[1] = b;
@@ -384,16 +405,18 @@ void refreshPanes(AppState& app) {
   d.versions[1] = sb.version;
   d.mode = app.compare.diff;
   d.requestedMax = app.compare.diffMax;
-  bg.post("diff", [ia = sa.image, ib = sb.image, mode = d.mode, max = d.requestedMax, mail = d.mail] {
-    DiffState::Result r;
-    r.image = encodeForDisplay(differenceHeatmap(*ia, *ib, mode, max, &r.usedMax), 0.0f);
-    mail->put(std::move(r));
-  });
+  bg.post("diff",
+          [ia = sa.image, ib = sb.image, mode = d.mode, max = d.requestedMax, mail = d.mail] {
+            DiffState::Result r;
+            r.image = encodeForDisplay(differenceHeatmap(*ia, *ib, mode, max, &r.usedMax), 0.0f);
+            mail->put(std::move(r));
+          });
 }
 
 bool paneActive(const AppState& app, int pane) {
   if (pane < app.paneCount || pane == app.compare.reference) return true;
-  return app.compare.mode != CompareMode::SideBySide && (pane == app.compare.paneA || pane == app.compare.paneB);
+  return app.compare.mode != CompareMode::SideBySide &&
+         (pane == app.compare.paneA || pane == app.compare.paneB);
 }
 
 bool allPanesFinished(const AppState& app) {
@@ -412,7 +435,8 @@ std::vector<std::string> findSceneFiles(const std::vector<std::string>& folders)
     std::error_code ec;
     for (const auto& entry : fs::directory_iterator(folder, ec)) {
       const fs::path p = entry.path();
-      if (!entry.is_regular_file() || (p.extension() != ".json" && p.extension() != ".obj")) continue;
+      if (!entry.is_regular_file() || (p.extension() != ".json" && p.extension() != ".obj"))
+        continue;
       if (p.filename() == "scene.schema.json" || isPresetFile(p.string())) continue;
       files.push_back(p.lexically_normal().string());
     }

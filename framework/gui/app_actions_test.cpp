@@ -41,7 +41,8 @@ void waitPanes(AppState& app) {
 // Tiny renders (32 x 24, one pass) so the tests stay fast.
 void makeSmall(AppState& app) {
   initPanes(app);
-  for (int i = 0; i < kMaxPanes; ++i) setTechnique(app, i, "raycast");  // headless: no GPU techniques
+  for (int i = 0; i < kMaxPanes; ++i)
+    setTechnique(app, i, "raycast");  // headless: no GPU techniques
   app.width = 32;
   app.height = 24;
   for (PaneState& p : app.panes) p.spp = 1;
@@ -63,7 +64,8 @@ TEST(AppActions, ABrokenSceneKeepsThePreviousOneAndSaysWhere) {
   EXPECT_EQ(app.scenePath, kScenes + "cornell_box.json");
   ASSERT_FALSE(app.messages.empty());
   EXPECT_TRUE(app.messages.back().error);
-  EXPECT_TRUE(contains(app.messages.back().text, "malformed_json.json:")) << app.messages.back().text;
+  EXPECT_TRUE(contains(app.messages.back().text, "malformed_json.json:"))
+      << app.messages.back().text;
 
   openScene(app, "/nonexistent.json");
   waitForSceneLoad(app);
@@ -78,7 +80,8 @@ TEST(AppActions, ChangingTheSceneFileOnDiskReloadsItKeepingTheView) {
   const fs::path dir = fs::temp_directory_path() / "lightlab_reload_test";
   fs::create_directories(dir);
   const fs::path file = dir / "scene.json";
-  fs::copy_file(kScenes + "tests/sphere_point_light.json", file, fs::copy_options::overwrite_existing);
+  fs::copy_file(kScenes + "tests/sphere_point_light.json", file,
+                fs::copy_options::overwrite_existing);
   AppState app;
   makeSmall(app);
   openScene(app, file.string());
@@ -144,14 +147,16 @@ TEST(AppActions, PresetAppliesAndABadPresetChangesNothing) {
   makeSmall(other);
   ASSERT_TRUE(loadPresetFile(other, file));
   waitForSceneLoad(other);
-  EXPECT_EQ(fs::path(other.scenePath).lexically_normal(), fs::path(app.scenePath).lexically_normal());
+  EXPECT_EQ(fs::path(other.scenePath).lexically_normal(),
+            fs::path(app.scenePath).lexically_normal());
   EXPECT_EQ(other.camera.eye, app.camera.eye);  // the preset's camera, not the scene's
   EXPECT_EQ(other.paneCount, 4);
   EXPECT_EQ(other.compare.mode, CompareMode::Wipe);
   EXPECT_EQ(other.compare.wipe, 0.25f);
   EXPECT_EQ(other.panes[2].techniqueParams.getInt("light_samples"), 9);
 
-  std::ofstream(dir / "bad.json") << R"({"lightlab_preset": 1, "scene": "x.json", "panes": [{"technique": "zzz"}]})";
+  std::ofstream(dir / "bad.json")
+      << R"({"lightlab_preset": 1, "scene": "x.json", "panes": [{"technique": "zzz"}]})";
   EXPECT_FALSE(loadPresetFile(other, (dir / "bad.json").string()));
   EXPECT_TRUE(contains(other.messages.back().text, "bad.json:1:")) << other.messages.back().text;
   EXPECT_EQ(other.paneCount, 4);
@@ -195,8 +200,10 @@ TEST(AppActions, ADroppedFileOpensAsAPresetOrAsAScene) {
 
 TEST(AppActions, SceneListFindsScenesButNotPresetsOrTheSchema) {
   const auto files = findSceneFiles({kScenes});
-  EXPECT_TRUE(std::any_of(files.begin(), files.end(), [](const std::string& f) { return contains(f, "cornell_box.json"); }));
-  EXPECT_TRUE(std::none_of(files.begin(), files.end(), [](const std::string& f) { return contains(f, "schema"); }));
+  EXPECT_TRUE(std::any_of(files.begin(), files.end(),
+                          [](const std::string& f) { return contains(f, "cornell_box.json"); }));
+  EXPECT_TRUE(std::none_of(files.begin(), files.end(),
+                           [](const std::string& f) { return contains(f, "schema"); }));
 }
 
 }  // namespace
@@ -212,7 +219,8 @@ bool sameAsHeadless(const AppState& app, int pane, const PaneSnapshot& s) {
   settings.width = s.image->width();
   settings.height = s.image->height();
   settings.spp = s.preview ? 1 : s.passes;
-  const auto accel = buildAccelerator(findAccelerator(p.accelerator), p.accelParams, app.scene->geometry);
+  const auto accel =
+      buildAccelerator(findAccelerator(p.accelerator), p.accelParams, app.scene->geometry);
   const auto technique = findTechnique(p.technique).make();
   RenderJob job(*app.scene, *accel, *technique, p.techniqueParams, settings);
   job.run();
@@ -224,7 +232,8 @@ bool sameAsHeadless(const AppState& app, int pane, const PaneSnapshot& s) {
 TEST(AppActions, EveryImageAfterACameraMoveShowsTheNewView) {
   AppState app;
   initPanes(app);
-  for (int i = 0; i < kMaxPanes; ++i) setTechnique(app, i, "raycast");  // headless: no GPU techniques
+  for (int i = 0; i < kMaxPanes; ++i)
+    setTechnique(app, i, "raycast");  // headless: no GPU techniques
   app.width = 128;
   app.height = 128;
   for (PaneState& p : app.panes) p.spp = 4;
@@ -250,7 +259,8 @@ TEST(AppActions, EveryImageAfterACameraMoveShowsTheNewView) {
     if (s.version != checked && s.image && (s.preview || s.passes == s.totalPasses)) {
       checked = s.version;
       ++images;
-      EXPECT_TRUE(sameAsHeadless(app, 1, s)) << "image " << images << ": preview " << s.preview << ", passes " << s.passes;
+      EXPECT_TRUE(sameAsHeadless(app, 1, s))
+          << "image " << images << ": preview " << s.preview << ", passes " << s.passes;
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }

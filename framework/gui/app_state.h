@@ -29,7 +29,8 @@ namespace ll::gui {
 struct PaneState {
   std::string technique = "raycast";
   std::string accelerator = "none";
-  ParamSet techniqueParams, accelParams;  // live values; their declarations come from the registries
+  ParamSet techniqueParams,
+      accelParams;  // live values; their declarations come from the registries
   int spp = 16;
   PaneView view = PaneView::Image;
   std::unique_ptr<PaneRenderer> renderer = std::make_unique<PaneRenderer>();
@@ -97,24 +98,25 @@ struct AppState {
   uint64_t sceneVersion = 0;
   std::filesystem::file_time_type sceneWriteTime{};
   bool autoReload = true;
-  std::string loadingPath;                         // non-empty while a load runs
+  std::chrono::steady_clock::time_point lastWatch;  // when the scene file's time was last checked
+  std::string loadingPath;                          // non-empty while a load runs
   std::future<std::shared_ptr<const Scene>> loading;
-  bool loadKeepsCamera = false;                    // a reload keeps the view; opening a new scene resets it
-  std::vector<std::string> sceneFiles;             // the file list of the "open" menu
+  bool loadKeepsCamera = false;         // a reload keeps the view; opening a new scene resets it
+  std::vector<std::string> sceneFiles;  // the file list of the "open" menu
   char pathInput[512] = {};
 
   // --- view ------------------------------------------------------------------
-  Camera camera;          // shared by every pane
+  Camera camera;  // shared by every pane
   bool cameraChanged = false;
   int width = 0, height = 0;  // render size in pixels (0 = the scene camera's)
   int paneCount = 2;
   std::array<PaneState, kMaxPanes> panes;
   CompareSetup compare;
   DiffState diff;
-  float exposure = 0.0f;  // display exposure, stops
+  float exposure = 0.0f;       // display exposure, stops
   bool showStructure = false;  // draw the accelerator's nodes over each pane
   int structureDepth = 3;      // at this depth (root = 0)
-  float uiScale = 1.0f;   // user's scale, times the monitor's content scale
+  float uiScale = 1.0f;        // user's scale, times the monitor's content scale
   float contentScale = 1.0f;
   float appliedFontScale = 0.0f;
   FrameTimes uiFrameWork;
@@ -122,6 +124,8 @@ struct AppState {
   bool toggleFullscreenRequest = false;  // set by the F11 key callback
   int windowedPos[2] = {100, 100}, windowedSize[2] = {1280, 800};
   bool draggingWipe = false;
+  bool draggingView = false;  // a mouse drag that started over the image area
+  int settledFrames = 0;      // --screenshot: frames drawn since every pane finished
 
   // --- files and messages ------------------------------------------------------
   char presetInput[512] = "preset.json";
@@ -133,7 +137,8 @@ struct AppState {
   std::array<std::array<float, 4>, kMaxPanes> paneRects{};
   std::array<float, 4> compareRect{};
   std::vector<std::array<float, 4>> overlayRects;  // captions and banners drawn over the images
-  std::map<std::string, std::array<float, 4>> widgetRects;  // named controls of the panel, for scripted UI tests
+  std::map<std::string, std::array<float, 4>>
+      widgetRects;  // named controls of the panel, for scripted UI tests
 
   // Last member: destroyed (joined) first, before anything its jobs use.
   std::unique_ptr<BackgroundWorker> background = std::make_unique<BackgroundWorker>();

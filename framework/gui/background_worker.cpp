@@ -19,7 +19,8 @@ BackgroundWorker::~BackgroundWorker() {
 void BackgroundWorker::post(const std::string& slot, std::function<void()> job) {
   {
     std::lock_guard lock(mutex_);
-    const auto it = std::find_if(queue_.begin(), queue_.end(), [&](const auto& q) { return q.first == slot; });
+    const auto it =
+        std::find_if(queue_.begin(), queue_.end(), [&](const auto& q) { return q.first == slot; });
     if (it != queue_.end())
       it->second = std::move(job);
     else

@@ -12,7 +12,8 @@ namespace ll::gui {
 struct DisplayImage {
   int width = 0, height = 0;
   std::vector<uint8_t> rgba;  // row-major, top row first, alpha 255
-  float legendMax = 0.0f;     // a heatmap: the value its brightest colour stands for; 0 = a plain image
+  float legendMax =
+      0.0f;  // a heatmap: the value its brightest colour stands for; 0 = a plain image
 };
 
 // linear * 2^exposureStops, clamped to [0,1], sRGB-encoded; NaN/Inf -> 0.

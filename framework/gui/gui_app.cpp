@@ -5,15 +5,15 @@
 
 #include <algorithm>
 #include <chrono>
-#include <ctime>
-#include <optional>
-#include <string>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <filesystem>
+#include <optional>
+#include <string>
 
-#include <GLFW/glfw3.h>
 #include <GL/gl.h>
+#include <GLFW/glfw3.h>
 #include <imgui.h>
 #include "backends/imgui_impl_glfw.h"
 #include "backends/imgui_impl_opengl3.h"
@@ -31,13 +31,16 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr const char* kFontPath = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";  // Debian fonts-dejavu-core
+constexpr const char* kFontPath =
+    "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";  // Debian fonts-dejavu-core
 constexpr float kBaseFontPixels = 15.0f;
 constexpr float kPanelWidth = 400.0f;  // at UI scale 1
 
 // GLFW's last error, folded into our one-line messages instead of printed.
 std::string gLastGlfwError;
-void onGlfwError(int code, const char* text) { gLastGlfwError = "GLFW error " + std::to_string(code) + ": " + text; }
+void onGlfwError(int code, const char* text) {
+  gLastGlfwError = "GLFW error " + std::to_string(code) + ": " + text;
+}
 
 void onDrop(GLFWwindow* window, int count, const char** paths) {
   auto* app = static_cast<AppState*>(glfwGetWindowUserPointer(window));
@@ -88,7 +91,6 @@ void applyUiScale(AppState& app) {
   app.appliedFontScale = scale;
 }
 
-
 // One frame of work that is not drawing: files, scene loads, pane renderers.
 void updateApp(AppState& app) {
   for (const std::string& path : app.droppedFiles) openDroppedFile(app, path);
@@ -132,24 +134,29 @@ std::string defaultScenePath() {
     const fs::path p = fs::path(folder) / "cornell_box.json";
     if (fs::exists(p)) return p.lexically_normal().string();
   }
-  throwUserError("cannot find the default scene data/scenes/cornell_box.json; name a scene: lightlab gui SCENE");
+  throwUserError(
+      "cannot find the default scene data/scenes/cornell_box.json; name a scene: lightlab gui "
+      "SCENE");
 }
 
 int runGui(const GuiOptions& options) {
   // Validate the named files before opening a window, so a typo fails fast.
   std::optional<ViewPreset> preset;
   if (!options.preset.empty()) preset = loadPreset(options.preset);
-  if (!options.scene.empty() && !fs::exists(options.scene)) throwUserError(options.scene + ": cannot open file");
+  if (!options.scene.empty() && !fs::exists(options.scene))
+    throwUserError(options.scene + ": cannot open file");
 
   glfwSetErrorCallback(onGlfwError);
   if (!glfwInit())
-    throwUserError("cannot open a window (" + gLastGlfwError + "); without a display use `lightlab render`");
+    throwUserError("cannot open a window (" + gLastGlfwError +
+                   "); without a display use `lightlab render`");
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
   glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);
-  GLFWwindow* window = glfwCreateWindow(options.windowWidth, options.windowHeight, "LightLab", nullptr, nullptr);
+  GLFWwindow* window =
+      glfwCreateWindow(options.windowWidth, options.windowHeight, "LightLab", nullptr, nullptr);
   if (!window) {
     glfwTerminate();
     throwUserError("cannot create an OpenGL 3.3 core window (" + gLastGlfwError +
@@ -160,7 +167,8 @@ int runGui(const GuiOptions& options) {
 
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
-  ImGui::GetIO().IniFilename = nullptr;  // the layout is fixed; presets hold the state worth keeping
+  ImGui::GetIO().IniFilename =
+      nullptr;                        // the layout is fixed; presets hold the state worth keeping
   glfwSetKeyCallback(window, onKey);  // before ImGui's backend, which chains to it
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   ImGui_ImplOpenGL3_Init("#version 330");
@@ -171,7 +179,8 @@ int runGui(const GuiOptions& options) {
   int exitStatus = 0;
   {
     AppState app;
-    app.sceneFiles = findSceneFiles(options.sceneFolders.empty() ? defaultSceneFolders() : options.sceneFolders);
+    app.sceneFiles =
+        findSceneFiles(options.sceneFolders.empty() ? defaultSceneFolders() : options.sceneFolders);
     initPanes(app);
     if (!gpu) addMessage(app, "GPU techniques unavailable: " + gpuWhy);
     glfwSetWindowUserPointer(window, &app);
@@ -225,23 +234,27 @@ int runGui(const GuiOptions& options) {
       glClear(GL_COLOR_BUFFER_BIT);
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
       ++frame;
-      app.uiFrameWork.add(std::chrono::duration<double>(std::chrono::steady_clock::now() - frameStart).count());
+      app.uiFrameWork.add(
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - frameStart).count());
       if (!app.screenshotRequest.empty()) {
         takeScreenshot(app, window, app.screenshotRequest);
         app.screenshotRequest.clear();
       }
       if (screenshotMode && frame >= options.frames) {
-        const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+        const double elapsed =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
         const bool timedOut = elapsed > options.screenshotTimeout;
         // Two frames after everything finished, so the last images are uploaded and drawn.
-        static int settled = 0;
         const bool finished = allPanesFinished(app);
-        if (finished) app.background->drain();  // display bytes and heatmap ready for the next frames
-        settled = finished ? settled + 1 : 0;
-        if (settled >= 2 || timedOut) {
+        if (finished)
+          app.background->drain();  // display bytes and heatmap ready for the next frames
+        app.settledFrames = finished ? app.settledFrames + 1 : 0;
+        if (app.settledFrames >= 2 || timedOut) {
           takeScreenshot(app, window, options.screenshot);
           if (timedOut) {
-            std::fprintf(stderr, "lightlab: error: screenshot taken after the %.0f s timeout, before every pane finished\n",
+            std::fprintf(stderr,
+                         "lightlab: error: screenshot taken after the %.0f s timeout, before every "
+                         "pane finished\n",
                          options.screenshotTimeout);
             exitStatus = 1;
           }
@@ -250,7 +263,8 @@ int runGui(const GuiOptions& options) {
       }
       glfwSwapBuffers(window);
     }
-    for (PaneState& p : app.panes) p.renderer.reset();  // join workers while the GL context still exists
+    for (PaneState& p : app.panes)
+      p.renderer.reset();  // join workers while the GL context still exists
   }
   gpu::OffscreenGl::destroy();
   ImGui_ImplOpenGL3_Shutdown();

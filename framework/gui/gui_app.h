@@ -8,13 +8,15 @@
 namespace ll::gui {
 
 struct GuiOptions {
-  std::string scene;       // scene to open; empty = the default Cornell box (unless a preset names one)
-  std::string preset;      // view preset to apply first
-  std::string screenshot;  // non-empty: after `frames` UI frames and every pane finished, save the window and exit
+  std::string scene;   // scene to open; empty = the default Cornell box (unless a preset names one)
+  std::string preset;  // view preset to apply first
+  std::string screenshot;  // non-empty: after `frames` UI frames and every pane finished, save the
+                           // window and exit
   int frames = 10;
-  double screenshotTimeout = 900.0;  // seconds; the screenshot is taken anyway after this, and the exit status is 1
+  double screenshotTimeout =
+      900.0;  // seconds; the screenshot is taken anyway after this, and the exit status is 1
   int windowWidth = 1280, windowHeight = 800;
-  float uiScale = 0.0f;  // 0 = keep the preset's (or 1)
+  float uiScale = 0.0f;                   // 0 = keep the preset's (or 1)
   std::vector<std::string> sceneFolders;  // where the "open" list looks for scenes
 };
 

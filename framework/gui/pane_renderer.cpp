@@ -111,7 +111,8 @@ void PaneRenderer::workerLoop() {
     }
     try {
       render(request, id);
-    } catch (const std::exception& e) {  // UserError from a technique, or anything else: shown, never fatal
+    } catch (const std::exception&
+                 e) {  // UserError from a technique, or anything else: shown, never fatal
       PaneSnapshot s = snapshot();
       s.request = id;
       s.phase = PaneSnapshot::Phase::Failed;
@@ -120,7 +121,8 @@ void PaneRenderer::workerLoop() {
     }
     std::lock_guard lock(mutex_);
     const auto phase = snapshot_.phase;
-    if (!pending_ && (phase == PaneSnapshot::Phase::Building || phase == PaneSnapshot::Phase::Rendering))
+    if (!pending_ &&
+        (phase == PaneSnapshot::Phase::Building || phase == PaneSnapshot::Phase::Rendering))
       snapshot_.phase = PaneSnapshot::Phase::Stopped;  // cancelled by stop(): the last image stays
   }
 }
@@ -135,14 +137,15 @@ void PaneRenderer::render(const RenderRequest& request, uint64_t id) {
 
   // The accelerator: rebuilt only when the scene or its own settings change.
   const AcceleratorInfo& accelInfo = findAccelerator(request.accelerator);
-  const std::string key =
-      std::to_string(request.sceneVersion) + "|" + accelInfo.name + "|" + request.accelParams.toJson().dump();
+  const std::string key = std::to_string(request.sceneVersion) + "|" + accelInfo.name + "|" +
+                          request.accelParams.toJson().dump();
   if (key != accelKey_ || !accel_) {
     s.phase = PaneSnapshot::Phase::Building;
     publish(s);
     accel_.reset();
     accelKey_.clear();
-    accel_ = buildAccelerator(accelInfo, request.accelParams, request.scene->geometry, &buildSeconds_);
+    accel_ =
+        buildAccelerator(accelInfo, request.accelParams, request.scene->geometry, &buildSeconds_);
     accelKey_ = key;
     std::lock_guard lock(mutex_);
     publishedAccel_ = accel_;
@@ -151,8 +154,9 @@ void PaneRenderer::render(const RenderRequest& request, uint64_t id) {
   if (request.view != PaneView::Image) return renderCost(request, id, s);
   const TechniqueInfo& techInfo = findTechnique(request.technique);
   // The cost of a pass is remembered per (scene, accelerator, technique, parameters, size).
-  const std::string costKey = key + "|" + techInfo.name + "|" + request.techniqueParams.toJson().dump() + "|" +
-                              std::to_string(request.settings.width) + "x" + std::to_string(request.settings.height);
+  const std::string costKey =
+      key + "|" + techInfo.name + "|" + request.techniqueParams.toJson().dump() + "|" +
+      std::to_string(request.settings.width) + "x" + std::to_string(request.settings.height);
   if (costKey != costKey_) {
     costKey_ = costKey;
     lastPassSeconds_ = -1.0;
@@ -197,8 +201,8 @@ void PaneRenderer::render(const RenderRequest& request, uint64_t id) {
   };
 
   const int divisor = previewDivisor(lastPassSeconds_);
-  if ((lastPassSeconds_ < 0.0 || lastPassSeconds_ > kPreviewAbove) && request.settings.width >= 8 * divisor &&
-      request.settings.height >= 8 * divisor) {
+  if ((lastPassSeconds_ < 0.0 || lastPassSeconds_ > kPreviewAbove) &&
+      request.settings.width >= 8 * divisor && request.settings.height >= 8 * divisor) {
     RenderSettings preview = request.settings;
     preview.width = std::max(1, preview.width / divisor);
     preview.height = std::max(1, preview.height / divisor);
@@ -222,8 +226,8 @@ void PaneRenderer::renderCost(const RenderRequest& request, uint64_t id, PaneSna
   publish(s);
   const Timer timer;
   const Camera camera = renderCamera(*request.scene, request.settings);
-  const CostMetric metric =
-      request.view == PaneView::NodesVisited ? CostMetric::NodesVisited : CostMetric::PrimitivesTested;
+  const CostMetric metric = request.view == PaneView::NodesVisited ? CostMetric::NodesVisited
+                                                                   : CostMetric::PrimitivesTested;
   Image counts = accelCostImage(*accel_, camera, metric, &cancel);
   {
     std::lock_guard lock(mutex_);
@@ -237,7 +241,8 @@ void PaneRenderer::renderCost(const RenderRequest& request, uint64_t id, PaneSna
   s.passes = s.totalPasses = 1;
   s.seconds = timer.seconds();
   s.stats = RenderStats{};
-  s.stats.work.rays[static_cast<size_t>(RayKind::Camera)] = static_cast<uint64_t>(camera.width) * camera.height;
+  s.stats.work.rays[static_cast<size_t>(RayKind::Camera)] =
+      static_cast<uint64_t>(camera.width) * camera.height;
   s.phase = PaneSnapshot::Phase::Done;
   publish(s);
 }

@@ -31,7 +31,8 @@ enum class PaneView { Image, NodesVisited, PrimitivesTested };
 
 struct RenderRequest {
   std::shared_ptr<const Scene> scene;
-  uint64_t sceneVersion = 0;  // changes whenever the scene is (re)loaded: the accelerator is rebuilt
+  uint64_t sceneVersion =
+      0;  // changes whenever the scene is (re)loaded: the accelerator is rebuilt
   std::string technique, accelerator;
   ParamSet techniqueParams, accelParams;
   RenderSettings settings;
@@ -41,21 +42,21 @@ struct RenderRequest {
 struct PaneSnapshot {
   enum class Phase { Idle, Building, Rendering, Done, Failed, Stopped };
   Phase phase = Phase::Idle;
-  uint64_t version = 0;                 // increases with every published image
-  uint64_t request = 0;                 // the submit() this snapshot reports on
-  uint64_t imageRequest = 0;            // the submit() the image was rendered for
-  std::shared_ptr<const Image> image;   // linear radiance, stub pixels striped magenta
-  bool preview = false;                 // image is the quick low-resolution first look
-  PaneView view = PaneView::Image;      // what `image` holds: radiance, or per-pixel counts
+  uint64_t version = 0;                // increases with every published image
+  uint64_t request = 0;                // the submit() this snapshot reports on
+  uint64_t imageRequest = 0;           // the submit() the image was rendered for
+  std::shared_ptr<const Image> image;  // linear radiance, stub pixels striped magenta
+  bool preview = false;                // image is the quick low-resolution first look
+  PaneView view = PaneView::Image;     // what `image` holds: radiance, or per-pixel counts
   int passes = 0, totalPasses = 0;
-  double seconds = 0.0;                 // render time up to the last completed pass (excludes build)
+  double seconds = 0.0;  // render time up to the last completed pass (excludes build)
   std::chrono::steady_clock::time_point started;  // when the current job began, for a live clock
-  double elapsed() const;               // seconds since `started` while rendering, else `seconds`
-  double buildSeconds = 0.0;            // accelerator build of the current scene
-  RenderStats stats;                    // as of the last completed pass
+  double elapsed() const;     // seconds since `started` while rendering, else `seconds`
+  double buildSeconds = 0.0;  // accelerator build of the current scene
+  RenderStats stats;          // as of the last completed pass
   std::map<std::string, std::string> missingTasks;  // student task id -> what
-  std::set<std::string> exactFallbacks;             // missing tasks whose fallback changes only the time
-  std::string error;                    // set when phase == Failed
+  std::set<std::string> exactFallbacks;  // missing tasks whose fallback changes only the time
+  std::string error;                     // set when phase == Failed
 };
 
 class PaneRenderer {
@@ -85,9 +86,9 @@ class PaneRenderer {
   mutable std::mutex mutex_;
   std::condition_variable wake_;
   std::optional<RenderRequest> pending_;
-  RenderJob* running_ = nullptr;                 // guarded by mutex_, for cancel
-  std::atomic<bool>* runningCost_ = nullptr;     // the cost image's cancel flag, likewise
-  void cancelRunning();                          // call with mutex_ held
+  RenderJob* running_ = nullptr;              // guarded by mutex_, for cancel
+  std::atomic<bool>* runningCost_ = nullptr;  // the cost image's cancel flag, likewise
+  void cancelRunning();                       // call with mutex_ held
   bool quit_ = false;
   bool busy_ = false;
   uint64_t submitted_ = 0;  // id of the newest request (or stop)

@@ -34,7 +34,8 @@ RenderRequest request(const std::shared_ptr<const Scene>& scene, int lightSample
 }
 
 Image headless(const RenderRequest& r) {
-  const auto accel = buildAccelerator(findAccelerator(r.accelerator), r.accelParams, r.scene->geometry);
+  const auto accel =
+      buildAccelerator(findAccelerator(r.accelerator), r.accelParams, r.scene->geometry);
   const auto technique = findTechnique(r.technique).make();
   RenderJob job(*r.scene, *accel, *technique, r.techniqueParams, r.settings);
   job.run();
@@ -85,7 +86,8 @@ TEST(PaneRenderer, SubmitReturnsWhileRenderingAndImagesArrivePassByPass) {
   r.settings.height = 128;
   const auto before = std::chrono::steady_clock::now();
   pane.submit(r);
-  EXPECT_LT(std::chrono::steady_clock::now() - before, std::chrono::seconds(1));  // no wait for a pass
+  EXPECT_LT(std::chrono::steady_clock::now() - before,
+            std::chrono::seconds(1));  // no wait for a pass
   uint64_t firstVersion = 0;
   for (int i = 0; i < 20000 && firstVersion == 0; ++i) {
     firstVersion = pane.snapshot().version;

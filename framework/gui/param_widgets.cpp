@@ -12,8 +12,8 @@ namespace {
 
 void tooltip(const ParamDecl& d) {
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("%s\n%s %s, default %s", d.help.c_str(), d.typeName().c_str(), d.rangeText().c_str(),
-                      d.defaultValue.c_str());
+    ImGui::SetTooltip("%s\n%s %s, default %s", d.help.c_str(), d.typeName().c_str(),
+                      d.rangeText().c_str(), d.defaultValue.c_str());
 }
 
 // Sliders over several decades are easier to use on a log scale.
@@ -32,19 +32,21 @@ bool paramWidgets(ParamSet& params, const std::function<void(const std::string&)
     switch (d.type) {
       case ParamDecl::Type::Int: {
         int v = params.getInt(d.name);
-        if (ImGui::SliderInt(d.name.c_str(), &v, static_cast<int>(d.min), static_cast<int>(d.max), "%d",
-                             sliderFlags(d))) {
-          params.set(d.name, std::to_string(std::clamp(v, static_cast<int>(d.min), static_cast<int>(d.max))));
+        if (ImGui::SliderInt(d.name.c_str(), &v, static_cast<int>(d.min), static_cast<int>(d.max),
+                             "%d", sliderFlags(d))) {
+          params.set(d.name, std::to_string(
+                                 std::clamp(v, static_cast<int>(d.min), static_cast<int>(d.max))));
           changed = true;
         }
         break;
       }
       case ParamDecl::Type::Float: {
         float v = static_cast<float>(params.getFloat(d.name));
-        if (ImGui::SliderFloat(d.name.c_str(), &v, static_cast<float>(d.min), static_cast<float>(d.max), "%.4g",
-                               sliderFlags(d))) {
+        if (ImGui::SliderFloat(d.name.c_str(), &v, static_cast<float>(d.min),
+                               static_cast<float>(d.max), "%.4g", sliderFlags(d))) {
           char text[64];
-          std::snprintf(text, sizeof text, "%.9g", std::clamp(static_cast<double>(v), d.min, d.max));
+          std::snprintf(text, sizeof text, "%.9g",
+                        std::clamp(static_cast<double>(v), d.min, d.max));
           params.set(d.name, text);
           changed = true;
         }

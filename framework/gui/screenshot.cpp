@@ -6,8 +6,8 @@
 #include <vector>
 
 #include <GL/gl.h>
-#include <nlohmann/json.hpp>
 #include <stb/stb_image_write.h>
+#include <nlohmann/json.hpp>
 
 #include "core/error.h"
 #include "gui/app_actions.h"
@@ -30,14 +30,18 @@ void saveFramebufferPng(const std::string& path, int width, int height) {
     throwUserError(path + ": cannot write screenshot");
 }
 
-std::string saveScreenshotSidecar(const AppState& app, const std::string& path, int width, int height,
-                                  float pixelScale) {
+std::string saveScreenshotSidecar(const AppState& app, const std::string& path, int width,
+                                  int height, float pixelScale) {
   using nlohmann::json;
   const auto rect = [&](const std::array<float, 4>& r) {
-    return json::array({r[0] * pixelScale, r[1] * pixelScale, r[2] * pixelScale, r[3] * pixelScale});
+    return json::array(
+        {r[0] * pixelScale, r[1] * pixelScale, r[2] * pixelScale, r[3] * pixelScale});
   };
   static const char* kPhases[] = {"idle", "building", "rendering", "done", "failed", "stopped"};
-  json j{{"width", width}, {"height", height}, {"scene", app.scenePath}, {"pane_count", app.paneCount}};
+  json j{{"width", width},
+         {"height", height},
+         {"scene", app.scenePath},
+         {"pane_count", app.paneCount}};
   j["panes"] = json::array();
   for (int i = 0; i < kMaxPanes; ++i) {
     const PaneState& p = app.panes[static_cast<size_t>(i)];
@@ -65,7 +69,9 @@ std::string saveScreenshotSidecar(const AppState& app, const std::string& path, 
                   {"rect", rect(app.compareRect)},
                   {"diff_max", app.diff.usedMax}};
   const auto vec = [](const Vec3& v) { return json::array({v.x, v.y, v.z}); };
-  j["camera"] = {{"eye", vec(app.camera.eye)}, {"target", vec(app.camera.target)}, {"up", vec(app.camera.up)},
+  j["camera"] = {{"eye", vec(app.camera.eye)},
+                 {"target", vec(app.camera.target)},
+                 {"up", vec(app.camera.up)},
                  {"fov_y_deg", app.camera.fovYDeg}};
   const FrameTimes& ft = app.uiFrameWork;
   j["ui_frames"] = {{"count", ft.frames},
@@ -77,7 +83,8 @@ std::string saveScreenshotSidecar(const AppState& app, const std::string& path, 
   j["overlays"] = json::array();
   for (const auto& r : app.overlayRects) j["overlays"].push_back(rect(r));
   j["messages"] = json::array();
-  for (const Message& m : app.messages) j["messages"].push_back({{"text", m.text}, {"error", m.error}});
+  for (const Message& m : app.messages)
+    j["messages"].push_back({{"text", m.text}, {"error", m.error}});
   const std::string sidecar = std::filesystem::path(path).replace_extension(".json").string();
   std::ofstream out(sidecar);
   if (!out) throwUserError(sidecar + ": cannot write screenshot sidecar");

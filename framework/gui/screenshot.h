@@ -17,7 +17,7 @@ void saveFramebufferPng(const std::string& path, int width, int height);
 // technique, accelerator, phase, passes and the rectangle of its image in
 // framebuffer pixels (top-left origin), scaled by `pixelScale` from window
 // coordinates. Returns the sidecar's path.
-std::string saveScreenshotSidecar(const AppState& app, const std::string& path, int width, int height,
-                                  float pixelScale);
+std::string saveScreenshotSidecar(const AppState& app, const std::string& path, int width,
+                                  int height, float pixelScale);
 
 }  // namespace ll::gui

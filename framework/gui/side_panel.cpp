@@ -33,9 +33,11 @@ void helpMarker(const char* text) {
 void sceneSection(AppState& app) {
   if (!ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) return;
   ImGui::TextWrapped("%s", app.scenePath.empty() ? "(none)" : app.scenePath.c_str());
-  if (!app.loadingPath.empty()) ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "loading %s ...", app.loadingPath.c_str());
+  if (!app.loadingPath.empty())
+    ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "loading %s ...", app.loadingPath.c_str());
   if (app.scene) {
-    ImGui::Text("%u triangles, %zu spheres", app.scene->geometry.triangleCount(), app.scene->geometry.spheres.size());
+    ImGui::Text("%u triangles, %zu spheres", app.scene->geometry.triangleCount(),
+                app.scene->geometry.spheres.size());
     ImGui::TextWrapped("effects: %s", joinNames(app.scene->effects.names()).c_str());
   }
   if (ImGui::BeginCombo("open", "choose a scene file")) {
@@ -43,7 +45,9 @@ void sceneSection(AppState& app) {
       if (ImGui::Selectable(f.c_str(), f == app.scenePath)) openScene(app, f);
     ImGui::EndCombo();
   }
-  helpMarker("Scenes found in data/scenes and the build's generated scenes.\nYou can also drop a scene or preset file on the window.");
+  helpMarker(
+      "Scenes found in data/scenes and the build's generated scenes.\nYou can also drop a scene or "
+      "preset file on the window.");
   ImGui::InputText("path", app.pathInput, sizeof app.pathInput);
   recordWidget(app, "scene.path");
   ImGui::SameLine();
@@ -58,7 +62,8 @@ void cameraSection(AppState& app) {
   if (!ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen)) return;
   Camera c = app.camera;
   bool edited = false;
-  const float step = app.scene ? std::max(app.scene->geometry.sceneBounds().diagonal() * 0.002f, 1e-4f) : 0.01f;
+  const float step =
+      app.scene ? std::max(app.scene->geometry.sceneBounds().diagonal() * 0.002f, 1e-4f) : 0.01f;
   edited |= ImGui::DragFloat3("eye", &c.eye.x, step, 0, 0, "%.3f");
   edited |= ImGui::DragFloat3("target", &c.target.x, step, 0, 0, "%.3f");
   edited |= ImGui::DragFloat3("up", &c.up.x, 0.01f, -1, 1, "%.3f");
@@ -71,7 +76,9 @@ void cameraSection(AppState& app) {
   recordWidget(app, "camera.frame");
   ImGui::SameLine();
   if (ImGui::Button("Reset")) resetCamera(app);
-  helpMarker("Over the image: left drag orbits, right/middle drag pans, wheel zooms.\nW/A/S/D fly, Q/E down/up, Shift = faster.");
+  helpMarker(
+      "Over the image: left drag orbits, right/middle drag pans, wheel zooms.\nW/A/S/D fly, Q/E "
+      "down/up, Shift = faster.");
 }
 
 void layoutSection(AppState& app) {
@@ -104,28 +111,34 @@ void layoutSection(AppState& app) {
     ImGui::SetNextItemWidth(60 * ImGui::GetIO().FontGlobalScale);
     ImGui::Combo("##b", &app.compare.paneB, letters, kMaxPanes);
   }
-  if (app.compare.mode == CompareMode::Wipe) ImGui::SliderFloat("split", &app.compare.wipe, 0.0f, 1.0f, "%.2f");
+  if (app.compare.mode == CompareMode::Wipe)
+    ImGui::SliderFloat("split", &app.compare.wipe, 0.0f, 1.0f, "%.2f");
   if (app.compare.mode == CompareMode::Difference) {
     int diff = app.compare.diff == DiffMode::Absolute ? 0 : 1;
     ImGui::RadioButton("absolute", &diff, 0);
     ImGui::SameLine();
     ImGui::RadioButton("relative", &diff, 1);
     app.compare.diff = diff == 0 ? DiffMode::Absolute : DiffMode::Relative;
-    ImGui::SliderFloat("scale max", &app.compare.diffMax, 0.0f, 1.0f, app.compare.diffMax <= 0 ? "auto" : "%.4f",
-                       ImGuiSliderFlags_AlwaysClamp);
-    helpMarker("0 = automatic: the 99th percentile of the error, so a few fireflies do not wash out the map.");
+    ImGui::SliderFloat("scale max", &app.compare.diffMax, 0.0f, 1.0f,
+                       app.compare.diffMax <= 0 ? "auto" : "%.4f", ImGuiSliderFlags_AlwaysClamp);
+    helpMarker(
+        "0 = automatic: the 99th percentile of the error, so a few fireflies do not wash out the "
+        "map.");
   }
   const char* refs[] = {"none", "A", "B", "C", "D"};
   int ref = app.compare.reference + 1;
   if (ImGui::Combo("error against", &ref, refs, kMaxPanes + 1)) app.compare.reference = ref - 1;
-  helpMarker("RMSE and SSIM of every other pane against this reference pane, updated as passes arrive.");
+  helpMarker(
+      "RMSE and SSIM of every other pane against this reference pane, updated as passes arrive.");
   ImGui::SliderFloat("exposure", &app.exposure, -8.0f, 8.0f, "%+.1f stops");
   ImGui::Checkbox("structure", &app.showStructure);
   recordWidget(app, "structure.show");
   ImGui::SameLine();
   ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);
   ImGui::SliderInt("depth", &app.structureDepth, 0, 30, "depth %d", ImGuiSliderFlags_AlwaysClamp);
-  helpMarker("Draws the nodes of each pane's accelerator at this depth (boxes, cells or spheres; leaves above it in orange).");
+  helpMarker(
+      "Draws the nodes of each pane's accelerator at this depth (boxes, cells or spheres; leaves "
+      "above it in orange).");
   ImGui::SetNextItemWidth(80 * ImGui::GetIO().FontGlobalScale);
   int size[2] = {app.width, app.height};
   if (ImGui::InputInt2("render size (0 = scene)", size, ImGuiInputTextFlags_EnterReturnsTrue)) {
@@ -140,7 +153,8 @@ void statsTable(const PaneState& p) {
   const double rays = static_cast<double>(s.stats.work.totalRays());
   ImGui::Text("pass %d/%d   %.2f s   %.2f Mrays/s", s.passes, s.totalPasses, s.elapsed(),
               s.seconds > 0 ? rays / s.seconds / 1e6 : 0.0);
-  if (ImGui::BeginTable("rays", 2, ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp)) {
+  if (ImGui::BeginTable("rays", 2,
+                        ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp)) {
     for (int k = 0; k < kRayKindCount; ++k) {
       const uint64_t n = s.stats.work.rays[static_cast<size_t>(k)];
       ImGui::TableNextRow();
@@ -162,8 +176,8 @@ void statsTable(const PaneState& p) {
 void paneSection(AppState& app, int i) {
   PaneState& p = app.panes[static_cast<size_t>(i)];
   char title[96];
-  std::snprintf(title, sizeof title, "Pane %c: %s / %s###pane%d", paneLetter(i), p.technique.c_str(),
-                p.accelerator.c_str(), i);
+  std::snprintf(title, sizeof title, "Pane %c: %s / %s###pane%d", paneLetter(i),
+                p.technique.c_str(), p.accelerator.c_str(), i);
   if (!ImGui::CollapsingHeader(title, i < 2 ? ImGuiTreeNodeFlags_DefaultOpen : 0)) return;
   ImGui::PushID(i);
   if (ImGui::BeginCombo("technique", p.technique.c_str())) {
@@ -175,12 +189,14 @@ void paneSection(AppState& app, int i) {
   }
   if (ImGui::BeginCombo("accelerator", p.accelerator.c_str())) {
     for (const AcceleratorInfo& a : accelerators()) {
-      if (ImGui::Selectable(a.name.c_str(), a.name == p.accelerator)) setAccelerator(app, i, a.name);
+      if (ImGui::Selectable(a.name.c_str(), a.name == p.accelerator))
+        setAccelerator(app, i, a.name);
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", a.help.c_str());
     }
     ImGui::EndCombo();
   }
-  if (ImGui::SliderInt("passes (spp)", &p.spp, 1, 1024, "%d", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp))
+  if (ImGui::SliderInt("passes (spp)", &p.spp, 1, 1024, "%d",
+                       ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp))
     p.dirty = true;
   if (paramWidgets(p.techniqueParams, [&](const std::string& name) {
         recordWidget(app, std::string(1, paneLetter(i)) + ".param." + name);
@@ -198,19 +214,23 @@ void paneSection(AppState& app, int i) {
   }
   recordWidget(app, std::string(1, paneLetter(i)) + ".view");
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("cost: the accelerator's work for the camera ray of each pixel, as a heatmap with its scale");
+    ImGui::SetTooltip(
+        "cost: the accelerator's work for the camera ray of each pixel, as a heatmap with its "
+        "scale");
   if (ImGui::Button("Restart")) p.dirty = true;
   if (app.scene) {
     const EffectSet sim = findTechnique(p.technique).simulates;
     const EffectSet needed = app.scene->effects;
-    ImGui::TextWrapped("simulates: %s", joinNames(EffectSet::fromBits(needed.bits() & sim.bits()).names()).c_str());
+    ImGui::TextWrapped("simulates: %s",
+                       joinNames(EffectSet::fromBits(needed.bits() & sim.bits()).names()).c_str());
     const EffectSet missed = needed.minus(sim);
     if (!missed.empty())
       ImGui::TextColored(ImVec4(1, 0.7f, 0.3f, 1), "misses: %s", joinNames(missed.names()).c_str());
   }
   statsTable(p);
-  if (p.hasError) ImGui::Text("vs %c: RMSE %.5g  SSIM %.4f  PSNR %.2f dB", paneLetter(app.compare.reference),
-                              p.error.rmse, p.error.ssim, p.error.psnr);
+  if (p.hasError)
+    ImGui::Text("vs %c: RMSE %.5g  SSIM %.4f  PSNR %.2f dB", paneLetter(app.compare.reference),
+                p.error.rmse, p.error.ssim, p.error.psnr);
   for (const auto& [id, what] : p.shown.missingTasks)
     ImGui::TextColored(ImVec4(1, 0.4f, 0.9f, 1), "task %s missing: %s", id.c_str(), what.c_str());
   if (p.shown.phase == PaneSnapshot::Phase::Failed)
@@ -224,7 +244,9 @@ void presetSection(AppState& app) {
   if (ImGui::Button("Save")) savePresetFile(app, app.presetInput);
   ImGui::SameLine();
   if (ImGui::Button("Load")) loadPresetFile(app, app.presetInput);
-  helpMarker("The whole view: scene, camera, panes with technique, accelerator and parameters, compare mode.\nOpen one with `lightlab gui --preset FILE`.");
+  helpMarker(
+      "The whole view: scene, camera, panes with technique, accelerator and parameters, compare "
+      "mode.\nOpen one with `lightlab gui --preset FILE`.");
 }
 
 void viewSection(AppState& app, GLFWwindow* window) {
@@ -232,14 +254,17 @@ void viewSection(AppState& app, GLFWwindow* window) {
   ImGui::SliderFloat("UI scale", &app.uiScale, 0.5f, 3.0f, "%.2f");
   ImGui::Text("monitor content scale %.2f", static_cast<double>(app.contentScale));
   const float fps = ImGui::GetIO().Framerate;
-  ImGui::Text("UI %.1f ms per frame (%.0f fps)", static_cast<double>(1000.0f / std::max(fps, 1e-3f)),
-              static_cast<double>(fps));
+  ImGui::Text("UI %.1f ms per frame (%.0f fps)",
+              static_cast<double>(1000.0f / std::max(fps, 1e-3f)), static_cast<double>(fps));
   const FrameTimes& ft = app.uiFrameWork;
   if (ft.frames > 1)
-    ImGui::Text("UI work per frame: mean %.2f ms, max %.1f ms", 1e3 * ft.sumSeconds / (ft.frames - 1),
-                1e3 * ft.maxSeconds);
-  helpMarker("The UI never waits for a render: panes render on worker threads and the UI only copies finished passes.");
-  if (ImGui::Button(app.fullscreen ? "Windowed (F11)" : "Fullscreen (F11)")) toggleFullscreen(app, window);
+    ImGui::Text("UI work per frame: mean %.2f ms, max %.1f ms",
+                1e3 * ft.sumSeconds / (ft.frames - 1), 1e3 * ft.maxSeconds);
+  helpMarker(
+      "The UI never waits for a render: panes render on worker threads and the UI only copies "
+      "finished passes.");
+  if (ImGui::Button(app.fullscreen ? "Windowed (F11)" : "Fullscreen (F11)"))
+    toggleFullscreen(app, window);
   ImGui::SameLine();
   if (ImGui::Button("Screenshot (F12)")) app.screenshotRequest = "lightlab_screenshot.png";
 }
@@ -248,7 +273,8 @@ void messagesSection(AppState& app) {
   if (!ImGui::CollapsingHeader("Messages", ImGuiTreeNodeFlags_DefaultOpen)) return;
   if (ImGui::SmallButton("clear")) app.messages.clear();
   for (auto it = app.messages.rbegin(); it != app.messages.rend(); ++it)
-    ImGui::TextColored(it->error ? ImVec4(1, 0.45f, 0.45f, 1) : ImVec4(0.7f, 0.9f, 0.7f, 1), "%s", it->text.c_str());
+    ImGui::TextColored(it->error ? ImVec4(1, 0.45f, 0.45f, 1) : ImVec4(0.7f, 0.9f, 0.7f, 1), "%s",
+                       it->text.c_str());
 }
 
 }  // namespace
@@ -262,8 +288,8 @@ void toggleFullscreen(AppState& app, GLFWwindow* window) {
     glfwGetWindowSize(window, &app.windowedSize[0], &app.windowedSize[1]);
     glfwSetWindowMonitor(window, monitor, 0, 0, mode->width, mode->height, mode->refreshRate);
   } else {
-    glfwSetWindowMonitor(window, nullptr, app.windowedPos[0], app.windowedPos[1], app.windowedSize[0],
-                         app.windowedSize[1], 0);
+    glfwSetWindowMonitor(window, nullptr, app.windowedPos[0], app.windowedPos[1],
+                         app.windowedSize[0], app.windowedSize[1], 0);
   }
   app.fullscreen = !app.fullscreen;
 }

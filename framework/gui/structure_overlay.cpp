@@ -19,8 +19,8 @@ bool projectToImage(const Camera& camera, const Vec3& p, float& px, float& py) {
   return std::isfinite(px) && std::isfinite(py);
 }
 
-int drawStructure(ImDrawList* dl, const Camera& camera, const std::vector<NodeShape>& nodes, float x, float y,
-                  float w, float h, int maxNodes) {
+int drawStructure(ImDrawList* dl, const Camera& camera, const std::vector<NodeShape>& nodes,
+                  float x, float y, float w, float h, int maxNodes) {
   const float sx = w / static_cast<float>(camera.width), sy = h / static_cast<float>(camera.height);
   const auto toScreen = [&](const Vec3& p, ImVec2& out) {
     float px = 0, py = 0;
@@ -44,9 +44,10 @@ int drawStructure(ImDrawList* dl, const Camera& camera, const std::vector<NodeSh
     ImVec2 corner[8];
     bool ok[8];
     for (int k = 0; k < 8; ++k)
-      ok[k] = toScreen(Vec3((k & 1) ? n.box.max.x : n.box.min.x, (k & 2) ? n.box.max.y : n.box.min.y,
-                            (k & 4) ? n.box.max.z : n.box.min.z),
-                       corner[k]);
+      ok[k] =
+          toScreen(Vec3((k & 1) ? n.box.max.x : n.box.min.x, (k & 2) ? n.box.max.y : n.box.min.y,
+                        (k & 4) ? n.box.max.z : n.box.min.z),
+                   corner[k]);
     for (int a = 0; a < 8; ++a)
       for (int bit : {1, 2, 4}) {
         const int b = a | bit;

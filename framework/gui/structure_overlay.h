@@ -18,7 +18,7 @@ bool projectToImage(const Camera& camera, const Vec3& p, float& px, float& py);
 
 // Draws `nodes` into the screen rectangle (x, y, w, h) that shows `camera`'s
 // image. At most `maxNodes` are drawn (the rest are counted in the return).
-int drawStructure(ImDrawList* dl, const Camera& camera, const std::vector<NodeShape>& nodes, float x, float y,
-                  float w, float h, int maxNodes = 4000);
+int drawStructure(ImDrawList* dl, const Camera& camera, const std::vector<NodeShape>& nodes,
+                  float x, float y, float w, float h, int maxNodes = 4000);
 
 }  // namespace ll::gui

@@ -63,7 +63,9 @@ void frameBounds(Camera& camera, const Bounds3& bounds) {
 
 bool cameraIsValid(const Camera& camera) {
   const Vec3 view = camera.target - camera.eye;
-  const auto finite = [](const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
+  const auto finite = [](const Vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+  };
   if (!finite(camera.eye) || !finite(camera.target) || !finite(camera.up)) return false;
   if (!(camera.fovYDeg > 0.0f && camera.fovYDeg < 180.0f)) return false;
   if (glm::length(view) <= 0.0f || glm::length(camera.up) <= 0.0f) return false;

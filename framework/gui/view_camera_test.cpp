@@ -20,7 +20,9 @@ Camera lookingDownZ() {
   return c;
 }
 
-float distance(const Camera& c) { return glm::length(c.eye - c.target); }
+float distance(const Camera& c) {
+  return glm::length(c.eye - c.target);
+}
 
 TEST(ViewCamera, OrbitKeepsTheDistanceAndTheTarget) {
   Camera c = lookingDownZ();
@@ -92,7 +94,8 @@ TEST(ViewCamera, FrameBoundsPutsEveryCornerInsideTheImage) {
   EXPECT_NEAR(glm::length(c.target - b.center()), 0.0f, 1e-3f);
   const CameraFrame f(c);
   for (int i = 0; i < 8; ++i) {
-    const Vec3 p((i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y, (i & 4) ? b.max.z : b.min.z);
+    const Vec3 p((i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y,
+                 (i & 4) ? b.max.z : b.min.z);
     const Vec3 d = p - c.eye;
     const float z = glm::dot(d, f.w);
     ASSERT_GT(z, 0.0f);

@@ -46,7 +46,8 @@ std::map<std::string, std::string> parseParams(const JsonNode& node, const std::
 }
 
 template <class Info>
-const Info& findNamed(const JsonNode& node, const std::string& key, const Info& (*find)(const std::string&)) {
+const Info& findNamed(const JsonNode& node, const std::string& key,
+                      const Info& (*find)(const std::string&)) {
   const std::string name = node.string(key);
   try {
     return find(name);
@@ -61,9 +62,11 @@ PaneSetup parsePane(const JsonNode& n) {
   PaneSetup p;
   const TechniqueInfo& t = findNamed<TechniqueInfo>(n, "technique", &findTechnique);
   p.technique = t.name;
-  if (n.has("accelerator")) p.accelerator = findNamed<AcceleratorInfo>(n, "accelerator", &findAccelerator).name;
+  if (n.has("accelerator"))
+    p.accelerator = findNamed<AcceleratorInfo>(n, "accelerator", &findAccelerator).name;
   const AcceleratorInfo& a = findAccelerator(p.accelerator);
-  if (n.has("params")) p.techniqueParams = parseParams(n.child("params"), "technique '" + t.name + "'", t.params);
+  if (n.has("params"))
+    p.techniqueParams = parseParams(n.child("params"), "technique '" + t.name + "'", t.params);
   if (n.has("accel_params"))
     p.accelParams = parseParams(n.child("accel_params"), "accelerator '" + a.name + "'", a.params);
   p.spp = n.integer("spp", p.spp, 1, 1 << 16);
@@ -94,7 +97,9 @@ constexpr std::pair<const char*, CompareMode> kModes[] = {{"side-by-side", Compa
 constexpr std::pair<const char*, DiffMode> kDiffModes[] = {{"absolute", DiffMode::Absolute},
                                                            {"relative", DiffMode::Relative}};
 
-nlohmann::json vec3Json(const Vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
+nlohmann::json vec3Json(const Vec3& v) {
+  return nlohmann::json::array({v.x, v.y, v.z});
+}
 
 }  // namespace
 
@@ -104,20 +109,23 @@ const char* compareModeName(CompareMode mode) {
   return "?";
 }
 
-ViewPreset parsePreset(const std::string& text, const std::string& file, const std::string& baseDir) {
+ViewPreset parsePreset(const std::string& text, const std::string& file,
+                       const std::string& baseDir) {
   const JsonDocument doc(text, file);
   const JsonNode root(doc, doc.root(), "", "preset");
   root.requireObject();
   if (!root.has("lightlab_preset") || root.json()["lightlab_preset"] != kFormatVersion)
-    root.fail("not a LightLab view preset: it needs \"lightlab_preset\": " + std::to_string(kFormatVersion) +
+    root.fail("not a LightLab view preset: it needs \"lightlab_preset\": " +
+              std::to_string(kFormatVersion) +
               " (is this a scene? open scenes with `lightlab gui SCENE`)");
-  root.allowOnly({"lightlab_preset", "description", "scene", "camera", "width", "height", "panes", "pane_count",
-                  "compare", "ui_scale", "exposure", "structure"});
+  root.allowOnly({"lightlab_preset", "description", "scene", "camera", "width", "height", "panes",
+                  "pane_count", "compare", "ui_scale", "exposure", "structure"});
 
   ViewPreset p;
   const std::string scene = root.string("scene");
   const fs::path scenePath(scene);
-  p.scene = scenePath.is_absolute() ? scene : (fs::path(baseDir) / scenePath).lexically_normal().string();
+  p.scene =
+      scenePath.is_absolute() ? scene : (fs::path(baseDir) / scenePath).lexically_normal().string();
   if (root.has("camera")) p.camera = parseCamera(root.child("camera"));
   p.width = root.integer("width", 0, 0, 16384);
   p.height = root.integer("height", 0, 0, 16384);
@@ -134,7 +142,8 @@ ViewPreset parsePreset(const std::string& text, const std::string& file, const s
   const JsonNode panes = root.child("panes");
   panes.requireArray();
   if (panes.size() < 1 || panes.size() > static_cast<size_t>(kMaxPanes))
-    panes.fail("panes must list 1 to " + std::to_string(kMaxPanes) + " panes, got " + std::to_string(panes.size()));
+    panes.fail("panes must list 1 to " + std::to_string(kMaxPanes) + " panes, got " +
+               std::to_string(panes.size()));
   for (size_t i = 0; i < panes.size(); ++i) p.panes.push_back(parsePane(panes.at(i)));
   p.paneCount = static_cast<int>(p.panes.size()) == 3 ? 4 : static_cast<int>(p.panes.size());
   if (root.has("pane_count")) {
@@ -172,7 +181,8 @@ nlohmann::json presetToJson(const ViewPreset& p, const std::string& baseDir) {
   j["lightlab_preset"] = kFormatVersion;
   std::string scene = p.scene;
   if (!scene.empty()) {  // relative to the preset's folder, so presets move with the tree
-    const fs::path base = fs::absolute(baseDir.empty() ? fs::current_path() : fs::path(baseDir)).lexically_normal();
+    const fs::path base =
+        fs::absolute(baseDir.empty() ? fs::current_path() : fs::path(baseDir)).lexically_normal();
     const fs::path relative = fs::absolute(scene).lexically_normal().lexically_relative(base);
     if (!relative.empty()) scene = relative.string();
   }
@@ -192,7 +202,10 @@ nlohmann::json presetToJson(const ViewPreset& p, const std::string& baseDir) {
   j["panes"] = json::array();
   for (int i = 0; i < static_cast<int>(p.panes.size()) && i < kMaxPanes; ++i) {
     const PaneSetup& pane = p.panes[static_cast<size_t>(i)];
-    json pj{{"technique", pane.technique}, {"accelerator", pane.accelerator}, {"spp", pane.spp}, {"view", pane.view}};
+    json pj{{"technique", pane.technique},
+            {"accelerator", pane.accelerator},
+            {"spp", pane.spp},
+            {"view", pane.view}};
     pj["params"] = pane.techniqueParams;
     pj["accel_params"] = pane.accelParams;
     j["panes"].push_back(pj);

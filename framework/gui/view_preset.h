@@ -21,9 +21,10 @@ constexpr int kMaxPanes = 4;
 struct PaneSetup {
   std::string technique = "raycast";
   std::string accelerator = "none";
-  std::map<std::string, std::string> techniqueParams;  // name -> value as written; missing = default
+  std::map<std::string, std::string>
+      techniqueParams;  // name -> value as written; missing = default
   std::map<std::string, std::string> accelParams;
-  int spp = 16;  // passes of progressive refinement (samples per pixel)
+  int spp = 16;                // passes of progressive refinement (samples per pixel)
   std::string view = "image";  // image | nodes | primitives (the accelerator's cost per pixel)
 };
 
@@ -32,11 +33,12 @@ const char* compareModeName(CompareMode mode);  // "side-by-side", "wipe", "diff
 
 struct CompareSetup {
   CompareMode mode = CompareMode::SideBySide;
-  float wipe = 0.5f;       // split position for wipe, fraction of the width from the left
-  int paneA = 0, paneB = 1;  // the two panes wipe and difference show (A left / B right; diff of A against B)
+  float wipe = 0.5f;  // split position for wipe, fraction of the width from the left
+  int paneA = 0,
+      paneB = 1;  // the two panes wipe and difference show (A left / B right; diff of A against B)
   DiffMode diff = DiffMode::Absolute;
-  float diffMax = 0.0f;    // heatmap scale; 0 = automatic (99th percentile)
-  int reference = -1;      // pane the error figures are measured against; -1 = none
+  float diffMax = 0.0f;  // heatmap scale; 0 = automatic (99th percentile)
+  int reference = -1;    // pane the error figures are measured against; -1 = none
 };
 
 struct ViewPreset {
@@ -46,10 +48,10 @@ struct ViewPreset {
   int paneCount = 2;             // 1, 2 or 4 panes shown
   std::vector<PaneSetup> panes;  // kMaxPanes entries after loading (missing ones get defaults)
   CompareSetup compare;
-  float uiScale = 1.0f;          // multiplies the monitor's content scale
-  float exposure = 0.0f;         // display exposure in stops
-  bool showStructure = false;    // the accelerators' nodes drawn over the panes
-  int structureDepth = 3;        // at this depth (root = 0)
+  float uiScale = 1.0f;        // multiplies the monitor's content scale
+  float exposure = 0.0f;       // display exposure in stops
+  bool showStructure = false;  // the accelerators' nodes drawn over the panes
+  int structureDepth = 3;      // at this depth (root = 0)
 };
 
 // Reads a preset, validating every name and value against the registries
@@ -57,7 +59,8 @@ struct ViewPreset {
 // file:line:col and the allowed values. Relative scene paths are made
 // relative to the current directory (resolved against the preset's folder).
 ViewPreset loadPreset(const std::string& path);
-ViewPreset parsePreset(const std::string& text, const std::string& file, const std::string& baseDir);
+ViewPreset parsePreset(const std::string& text, const std::string& file,
+                       const std::string& baseDir);
 
 // Writes `preset` as JSON; the scene path is stored relative to the preset's folder.
 void savePreset(const ViewPreset& preset, const std::string& path);

@@ -17,7 +17,9 @@ namespace fs = std::filesystem;
 using testing_support::contains;
 using testing_support::errorOf;
 
-ViewPreset parse(const std::string& text) { return parsePreset(text, "p.json", "/presets"); }
+ViewPreset parse(const std::string& text) {
+  return parsePreset(text, "p.json", "/presets");
+}
 
 TEST(ViewPreset, MinimalPresetGetsDefaultsAndFourPanes) {
   const ViewPreset p = parse(R"({"lightlab_preset": 1, "scene": "../data/cornell.json",
@@ -60,7 +62,8 @@ TEST(ViewPreset, SaveThenLoadGivesTheSameView) {
   p.exposure = -1.0f;
   const std::string file = (dir / "view.json").string();
   savePreset(p, file);
-  EXPECT_TRUE(contains(presetToJson(p, dir.string()).dump(), "\"scenes/s.json\""));  // stored relative
+  EXPECT_TRUE(
+      contains(presetToJson(p, dir.string()).dump(), "\"scenes/s.json\""));  // stored relative
 
   const ViewPreset q = loadPreset(file);
   EXPECT_EQ(fs::path(q.scene).lexically_normal(), fs::path(p.scene).lexically_normal());
@@ -92,15 +95,20 @@ TEST(ViewPreset, BadPresetsNameThePlaceAndTheAllowedValues) {
   EXPECT_TRUE(contains(e, "p.json:2:")) << e;
   EXPECT_TRUE(contains(e, "raycast")) << e;  // lists the known techniques
 
-  e = errorOf([&] { parse(head + R"("panes": [{"technique": "raycast", "params": {"light_samples": 0}}]})"); });
+  e = errorOf([&] {
+    parse(head + R"("panes": [{"technique": "raycast", "params": {"light_samples": 0}}]})");
+  });
   EXPECT_TRUE(contains(e, "p.json:1:")) << e;
   EXPECT_TRUE(contains(e, "light_samples")) << e;
   EXPECT_TRUE(contains(e, "[1, 1024]")) << e;
 
-  e = errorOf([&] { parse(head + R"("panes": [{"technique": "raycast", "params": {"bogus": 1}}]})"); });
+  e = errorOf(
+      [&] { parse(head + R"("panes": [{"technique": "raycast", "params": {"bogus": 1}}]})"); });
   EXPECT_TRUE(contains(e, "bogus")) << e;
 
-  e = errorOf([&] { parse(head + R"("panes": [{"technique": "raycast"}], "compare": {"mode": "blend"}})"); });
+  e = errorOf([&] {
+    parse(head + R"("panes": [{"technique": "raycast"}], "compare": {"mode": "blend"}})");
+  });
   EXPECT_TRUE(contains(e, "side-by-side, wipe, difference")) << e;
 
   e = errorOf([&] { parse(head + R"("panes": []})"); });

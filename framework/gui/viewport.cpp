@@ -26,14 +26,16 @@ struct Rect {
   bool contains(ImVec2 p) const { return p.x >= x && p.y >= y && p.x < x + w && p.y < y + h; }
 };
 
-// Cells of the pane grid: 1 = whole area; 2 = side by side (stacked if the area is tall); 4 = 2 x 2.
+// Cells of the pane grid: 1 = whole area; 2 = side by side (stacked if the area is tall); 4 = 2
+// x 2.
 Rect cellOf(int index, int count, Rect area) {
   if (count <= 1) return area;
   if (count == 2) {
     if (area.w >= area.h) return {area.x + index * area.w / 2, area.y, area.w / 2, area.h};
     return {area.x, area.y + index * area.h / 2, area.w, area.h / 2};
   }
-  return {area.x + (index % 2) * area.w / 2, area.y + (index / 2) * area.h / 2, area.w / 2, area.h / 2};
+  return {area.x + (index % 2) * area.w / 2, area.y + (index / 2) * area.h / 2, area.w / 2,
+          area.h / 2};
 }
 
 // The largest rectangle of the image's aspect ratio centred in `cell`, with a margin.
@@ -45,23 +47,24 @@ Rect fitImage(Rect cell, int imageW, int imageH, float margin) {
     fh = h;
     fw = h * aspect;
   }
-  return {std::floor(cell.x + (cell.w - fw) / 2), std::floor(cell.y + (cell.h - fh) / 2), std::floor(fw),
-          std::floor(fh)};
+  return {std::floor(cell.x + (cell.w - fw) / 2), std::floor(cell.y + (cell.h - fh) / 2),
+          std::floor(fw), std::floor(fh)};
 }
 
 ImU32 srgbColor(Rgb linear) {
-  const auto c = [](float v) { return static_cast<int>(std::lround(linearToSrgb(std::clamp(v, 0.0f, 1.0f)) * 255)); };
+  const auto c = [](float v) {
+    return static_cast<int>(std::lround(linearToSrgb(std::clamp(v, 0.0f, 1.0f)) * 255));
+  };
   return IM_COL32(c(linear.r), c(linear.g), c(linear.b), 255);
 }
 
-// Every box drawn over an image is recorded here (reset each frame) for the screenshot sidecar.
-std::vector<std::array<float, 4>>* gOverlays = nullptr;
-
 enum class Anchor { Top, Bottom };  // whether y is the box's top or bottom edge
 
-// Text lines, wrapped to maxWidth, in a filled box at (x, y); returns the box height.
-float captionBox(ImDrawList* dl, float x, float y, const std::vector<std::string>& lines, ImU32 bg,
-                 float maxWidth, Anchor anchor = Anchor::Top) {
+// Text lines, wrapped to maxWidth, in a filled box at (x, y); the box is
+// recorded in `overlays` (for the screenshot sidecar). Returns its height.
+float captionBox(std::vector<std::array<float, 4>>& overlays, ImDrawList* dl, float x, float y,
+                 const std::vector<std::string>& lines, ImU32 bg, float maxWidth,
+                 Anchor anchor = Anchor::Top) {
   const float pad = 4.0f * ImGui::GetIO().FontGlobalScale;
   const float wrap = std::max(maxWidth - 2 * pad, 1.0f);
   float width = 0.0f, height = 2 * pad;
@@ -73,10 +76,11 @@ float captionBox(ImDrawList* dl, float x, float y, const std::vector<std::string
   width = std::min(width + 2 * pad, maxWidth);
   if (anchor == Anchor::Bottom) y -= height;
   dl->AddRectFilled(ImVec2(x, y), ImVec2(x + width, y + height), bg, 3.0f);
-  if (gOverlays) gOverlays->push_back({x, y, width, height});
+  overlays.push_back({x, y, width, height});
   float ty = y + pad;
   for (const std::string& l : lines) {
-    dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(x + pad, ty), IM_COL32_WHITE, l.c_str(), nullptr, wrap);
+    dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(x + pad, ty), IM_COL32_WHITE,
+                l.c_str(), nullptr, wrap);
     ty += ImGui::CalcTextSize(l.c_str(), nullptr, false, wrap).y;
   }
   return height;
@@ -100,7 +104,8 @@ std::vector<std::string> paneCaption(const AppState& app, int index) {
                     (s.view == PaneView::NodesVisited ? "nodes visited" : "primitives tested") +
                     " per camera ray");
   } else {
-    lines.push_back(std::string(1, paneLetter(index)) + "  " + p.technique + "  /  " + p.accelerator);
+    lines.push_back(std::string(1, paneLetter(index)) + "  " + p.technique + "  /  " +
+                    p.accelerator);
   }
   char buf[160];
   switch (s.phase) {
@@ -114,9 +119,10 @@ std::vector<std::string> paneCaption(const AppState& app, int index) {
         break;
       }
       const double rays = static_cast<double>(s.stats.work.totalRays());
-      const std::string rate = s.passes > 0 && s.seconds > 0 && rays > 0 ? "  " + formatRate(rays / s.seconds) : "";
-      std::snprintf(buf, sizeof buf, "pass %d/%d  %.2f s%s%s", s.passes, s.totalPasses, s.elapsed(), rate.c_str(),
-                    s.phase == PaneSnapshot::Phase::Done ? "  done" : "");
+      const std::string rate =
+          s.passes > 0 && s.seconds > 0 && rays > 0 ? "  " + formatRate(rays / s.seconds) : "";
+      std::snprintf(buf, sizeof buf, "pass %d/%d  %.2f s%s%s", s.passes, s.totalPasses, s.elapsed(),
+                    rate.c_str(), s.phase == PaneSnapshot::Phase::Done ? "  done" : "");
       lines.emplace_back(buf);
       break;
     }
@@ -131,8 +137,8 @@ std::vector<std::string> paneCaption(const AppState& app, int index) {
       break;
   }
   if (p.hasError) {
-    std::snprintf(buf, sizeof buf, "vs %c: RMSE %.4g  SSIM %.4f", paneLetter(app.compare.reference), p.error.rmse,
-                  p.error.ssim);
+    std::snprintf(buf, sizeof buf, "vs %c: RMSE %.4g  SSIM %.4f", paneLetter(app.compare.reference),
+                  p.error.rmse, p.error.ssim);
     lines.emplace_back(buf);
   }
   if (app.scene && s.view == PaneView::Image) {
@@ -143,16 +149,19 @@ std::vector<std::string> paneCaption(const AppState& app, int index) {
 }
 
 // Banners at the bottom of a pane: a missing student task, a render error.
-void paneBanners(ImDrawList* dl, const PaneState& p, Rect r) {
+void paneBanners(ImDrawList* dl, AppState& app, const PaneState& p, Rect r) {
   std::vector<std::string> lines;
   for (const auto& [id, what] : p.shown.missingTasks)
     lines.push_back("Task " + id + " not implemented: " + what +
                     (p.shown.exactFallbacks.count(id) ? " (fallback: same picture, slower)"
                                                       : " (striped pixels use the stub)"));
-  if (!lines.empty()) captionBox(dl, r.x, r.y + r.h, lines, IM_COL32(150, 20, 120, 230), r.w, Anchor::Bottom);
+  if (!lines.empty())
+    captionBox(app.overlayRects, dl, r.x, r.y + r.h, lines, IM_COL32(150, 20, 120, 230), r.w,
+               Anchor::Bottom);
   if (p.shown.phase == PaneSnapshot::Phase::Failed) {
     const float h = ImGui::GetTextLineHeight() + 8.0f;
-    captionBox(dl, r.x, r.y + r.h / 2 - h / 2, {"Error: " + p.shown.error}, IM_COL32(170, 30, 30, 240), r.w);
+    captionBox(app.overlayRects, dl, r.x, r.y + r.h / 2 - h / 2, {"Error: " + p.shown.error},
+               IM_COL32(170, 30, 30, 240), r.w);
   }
 }
 
@@ -174,14 +183,16 @@ void drawLegend(ImDrawList* dl, Rect r, float maxValue, bool automatic) {
   for (int i = 0; i < segments; ++i) {
     const float t0 = static_cast<float>(i) / segments, t1 = static_cast<float>(i + 1) / segments;
     const ImU32 c0 = srgbColor(errorColormap(t0)), c1 = srgbColor(errorColormap(t1));
-    dl->AddRectFilledMultiColor(ImVec2(r.x + r.w * t0, r.y), ImVec2(r.x + r.w * t1, r.y + barH), c0, c1, c1, c0);
+    dl->AddRectFilledMultiColor(ImVec2(r.x + r.w * t0, r.y), ImVec2(r.x + r.w * t1, r.y + barH), c0,
+                                c1, c1, c0);
   }
   char buf[64];
   const float ty = r.y + barH + 2.0f;
   dl->AddText(ImVec2(r.x, ty), IM_COL32_WHITE, "0");
   std::snprintf(buf, sizeof buf, "%.3g", static_cast<double>(maxValue) / 2);
   dl->AddText(ImVec2(r.x + r.w / 2 - ImGui::CalcTextSize(buf).x / 2, ty), IM_COL32_WHITE, buf);
-  std::snprintf(buf, sizeof buf, "%.3g%s", static_cast<double>(maxValue), automatic ? " (auto, 99th pct)" : "");
+  std::snprintf(buf, sizeof buf, "%.3g%s", static_cast<double>(maxValue),
+                automatic ? " (auto, 99th pct)" : "");
   dl->AddText(ImVec2(r.x + r.w - ImGui::CalcTextSize(buf).x, ty), IM_COL32_WHITE, buf);
 }
 
@@ -201,28 +212,30 @@ void drawPaneStructure(ImDrawList* dl, AppState& app, int i, Rect r, float botto
   if (p.overlayNodes.empty())
     std::snprintf(buf, sizeof buf, "%s has no nodes to draw", p.accelerator.c_str());
   else
-    std::snprintf(buf, sizeof buf, "%zu nodes at depth %d%s", p.overlayNodes.size(), app.structureDepth,
-                  hidden > 0 ? " (first 4000 drawn)" : "");
-  captionBox(dl, r.x, r.y + r.h - bottomMargin, {buf}, IM_COL32(0, 0, 0, 170), r.w, Anchor::Bottom);
+    std::snprintf(buf, sizeof buf, "%zu nodes at depth %d%s", p.overlayNodes.size(),
+                  app.structureDepth, hidden > 0 ? " (first 4000 drawn)" : "");
+  captionBox(app.overlayRects, dl, r.x, r.y + r.h - bottomMargin, {buf}, IM_COL32(0, 0, 0, 170),
+             r.w, Anchor::Bottom);
 }
-
 
 Rect compareArea(const AppState& app, Rect area) {
   const PaneState& a = app.panes[static_cast<size_t>(app.compare.paneA)];
-  const int w = a.texture.valid() ? a.texture.width() : 1, h = a.texture.valid() ? a.texture.height() : 1;
-  const float legend = app.compare.mode == CompareMode::Difference ? 40.0f * ImGui::GetIO().FontGlobalScale : 0.0f;
+  const int w = a.texture.valid() ? a.texture.width() : 1,
+            h = a.texture.valid() ? a.texture.height() : 1;
+  const float legend =
+      app.compare.mode == CompareMode::Difference ? 40.0f * ImGui::GetIO().FontGlobalScale : 0.0f;
   return fitImage({area.x, area.y, area.w, area.h - legend}, w, h, 8.0f);
 }
 
 // The newest error of the last few seconds, over the top of the image area,
 // so a bad scene or preset is noticed even with the panel scrolled away.
-void errorToast(ImDrawList* dl, const AppState& app, Rect area) {
+void errorToast(ImDrawList* dl, AppState& app, Rect area) {
   constexpr auto kShowFor = std::chrono::seconds(10);
   for (auto it = app.messages.rbegin(); it != app.messages.rend(); ++it) {
     if (std::chrono::steady_clock::now() - it->when > kShowFor) return;
     if (!it->error) continue;
-    captionBox(dl, area.x + 8.0f, area.y + area.h - 8.0f, {it->text}, IM_COL32(170, 30, 30, 240), area.w - 16.0f,
-               Anchor::Bottom);
+    captionBox(app.overlayRects, dl, area.x + 8.0f, area.y + area.h - 8.0f, {it->text},
+               IM_COL32(170, 30, 30, 240), area.w - 16.0f, Anchor::Bottom);
     return;
   }
 }
@@ -243,7 +256,6 @@ void drawViewportContent(AppState& app, float x, float y, float w, float h) {
   dl->AddRectFilled(ImVec2(x, y), ImVec2(x + w, y + h), IM_COL32(28, 28, 32, 255));
   for (auto& r : app.paneRects) r = {0, 0, 0, 0};
   app.overlayRects.clear();
-  gOverlays = &app.overlayRects;
   app.compareRect = {0, 0, 0, 0};
   uploadFinished(app);
 
@@ -253,17 +265,22 @@ void drawViewportContent(AppState& app, float x, float y, float w, float h) {
       const Rect cell = cellOf(i, app.paneCount, area);
       const Rect r = p.texture.valid() ? fitImage(cell, p.texture.width(), p.texture.height(), 6.0f)
                                        : fitImage(cell, 1, 1, 6.0f);
-      if (p.texture.valid()) dl->AddImage(p.texture.imguiId(), ImVec2(r.x, r.y), ImVec2(r.x + r.w, r.y + r.h));
+      if (p.texture.valid())
+        dl->AddImage(p.texture.imguiId(), ImVec2(r.x, r.y), ImVec2(r.x + r.w, r.y + r.h));
       app.paneRects[static_cast<size_t>(i)] = {r.x, r.y, r.w, r.h};
-      const float lh = p.texture.valid() && p.texture.legendMax() > 0.0f ? 34.0f * ImGui::GetIO().FontGlobalScale : 0.0f;
+      const float lh = p.texture.valid() && p.texture.legendMax() > 0.0f
+                           ? 34.0f * ImGui::GetIO().FontGlobalScale
+                           : 0.0f;
       if (lh > 0.0f) {
-        dl->AddRectFilled(ImVec2(r.x, r.y + r.h - lh), ImVec2(r.x + r.w, r.y + r.h), IM_COL32(0, 0, 0, 190));
+        dl->AddRectFilled(ImVec2(r.x, r.y + r.h - lh), ImVec2(r.x + r.w, r.y + r.h),
+                          IM_COL32(0, 0, 0, 190));
         app.overlayRects.push_back({r.x, r.y + r.h - lh, r.w, lh});
-        drawLegend(dl, {r.x + 6.0f, r.y + r.h - lh + 2.0f, r.w - 12.0f, lh}, p.texture.legendMax(), true);
+        drawLegend(dl, {r.x + 6.0f, r.y + r.h - lh + 2.0f, r.w - 12.0f, lh}, p.texture.legendMax(),
+                   true);
       }
       if (app.showStructure && app.scene) drawPaneStructure(dl, app, i, r, lh);
-      captionBox(dl, r.x, r.y, paneCaption(app, i), IM_COL32(0, 0, 0, 170), r.w);
-      paneBanners(dl, p, r);
+      captionBox(app.overlayRects, dl, r.x, r.y, paneCaption(app, i), IM_COL32(0, 0, 0, 170), r.w);
+      paneBanners(dl, app, p, r);
     }
     return;
   }
@@ -277,32 +294,36 @@ void drawViewportContent(AppState& app, float x, float y, float w, float h) {
     const float split = std::clamp(app.compare.wipe, 0.0f, 1.0f);
     const float sx = r.x + r.w * split;
     if (a.texture.valid())
-      dl->AddImage(a.texture.imguiId(), ImVec2(r.x, r.y), ImVec2(sx, r.y + r.h), ImVec2(0, 0), ImVec2(split, 1));
+      dl->AddImage(a.texture.imguiId(), ImVec2(r.x, r.y), ImVec2(sx, r.y + r.h), ImVec2(0, 0),
+                   ImVec2(split, 1));
     if (b.texture.valid())
-      dl->AddImage(b.texture.imguiId(), ImVec2(sx, r.y), ImVec2(r.x + r.w, r.y + r.h), ImVec2(split, 0),
-                   ImVec2(1, 1));
+      dl->AddImage(b.texture.imguiId(), ImVec2(sx, r.y), ImVec2(r.x + r.w, r.y + r.h),
+                   ImVec2(split, 0), ImVec2(1, 1));
     dl->AddLine(ImVec2(sx, r.y), ImVec2(sx, r.y + r.h), IM_COL32(255, 255, 255, 230), 2.0f);
     const float handle = 7.0f * ImGui::GetIO().FontGlobalScale;
     dl->AddCircleFilled(ImVec2(sx, r.y + r.h / 2), handle, IM_COL32_WHITE);
     app.overlayRects.push_back({sx - handle - 1, r.y, 2 * handle + 2, r.h});
     app.paneRects[static_cast<size_t>(ia)] = {r.x, r.y, sx - r.x, r.h};
     app.paneRects[static_cast<size_t>(ib)] = {sx, r.y, r.x + r.w - sx, r.h};
-    captionBox(dl, r.x, r.y, paneCaption(app, ia), IM_COL32(0, 0, 0, 170), r.w / 2);
+    captionBox(app.overlayRects, dl, r.x, r.y, paneCaption(app, ia), IM_COL32(0, 0, 0, 170),
+               r.w / 2);
     const auto lines = paneCaption(app, ib);
     float bw = 0;
     for (const auto& l : lines) bw = std::max(bw, ImGui::CalcTextSize(l.c_str()).x + 8.0f);
     bw = std::min(bw, r.w / 2);
-    captionBox(dl, r.x + r.w - bw, r.y, lines, IM_COL32(0, 0, 0, 170), bw);
-    paneBanners(dl, a, {r.x, r.y, r.w / 2, r.h});
-    paneBanners(dl, b, {r.x + r.w / 2, r.y, r.w / 2, r.h});
+    captionBox(app.overlayRects, dl, r.x + r.w - bw, r.y, lines, IM_COL32(0, 0, 0, 170), bw);
+    paneBanners(dl, app, a, {r.x, r.y, r.w / 2, r.h});
+    paneBanners(dl, app, b, {r.x + r.w / 2, r.y, r.w / 2, r.h});
     return;
   }
 
-  // Difference heatmap of A against B (made by refreshPanes in the background), with its legend below.
+  // Difference heatmap of A against B (made by refreshPanes in the background), with its legend
+  // below.
   const bool diffCurrent = app.diff.valid && app.diff.panes[0] == ia && app.diff.panes[1] == ib;
   if (diffCurrent) {
     dl->AddImage(app.diff.texture.imguiId(), ImVec2(r.x, r.y), ImVec2(r.x + r.w, r.y + r.h));
-    drawLegend(dl, {r.x, r.y + r.h + 6.0f, r.w, 30.0f}, app.diff.usedMax, app.diff.requestedMax <= 0);
+    drawLegend(dl, {r.x, r.y + r.h + 6.0f, r.w, 30.0f}, app.diff.usedMax,
+               app.diff.requestedMax <= 0);
   }
   char title[200];
   std::snprintf(title, sizeof title, "%s error of %c (%s) against %c (%s)",
@@ -310,7 +331,7 @@ void drawViewportContent(AppState& app, float x, float y, float w, float h) {
                 a.technique.c_str(), paneLetter(ib), b.technique.c_str());
   std::vector<std::string> lines{title};
   if (!diffCurrent) lines.emplace_back("waiting for both images...");
-  captionBox(dl, r.x, r.y, lines, IM_COL32(0, 0, 0, 170), r.w);
+  captionBox(app.overlayRects, dl, r.x, r.y, lines, IM_COL32(0, 0, 0, 170), r.w);
 }
 
 }  // namespace
@@ -318,14 +339,15 @@ void drawViewportContent(AppState& app, float x, float y, float w, float h) {
 void handleCameraInput(AppState& app, GLFWwindow* window, float x, float y, float w, float h) {
   ImGuiIO& io = ImGui::GetIO();
   const Rect area{x, y, w, h};
-  static bool dragging = false;  // a drag that started over the image area
+  bool& dragging = app.draggingView;
   const bool anyDown = ImGui::IsMouseDown(0) || ImGui::IsMouseDown(1) || ImGui::IsMouseDown(2);
   if (!anyDown) {
     dragging = false;
     app.draggingWipe = false;
   }
   if (!io.WantCaptureMouse) {
-    const bool clicked = ImGui::IsMouseClicked(0) || ImGui::IsMouseClicked(1) || ImGui::IsMouseClicked(2);
+    const bool clicked =
+        ImGui::IsMouseClicked(0) || ImGui::IsMouseClicked(1) || ImGui::IsMouseClicked(2);
     if (clicked && area.contains(io.MousePos)) {
       dragging = true;
       if (app.compare.mode == CompareMode::Wipe && ImGui::IsMouseClicked(0)) {
@@ -336,7 +358,8 @@ void handleCameraInput(AppState& app, GLFWwindow* window, float x, float y, floa
     }
     const float cellH = std::max(app.paneCount == 4 ? h / 2 : h, 1.0f);
     // The frame a drag starts contributes no motion: the pointer may have jumped there.
-    const bool moving = dragging && !clicked && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f);
+    const bool moving =
+        dragging && !clicked && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f);
     if (moving) {
       if (app.draggingWipe) {
         const auto& cr = app.compareRect;

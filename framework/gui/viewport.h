@@ -19,6 +19,8 @@ void drawViewport(AppState& app, float x, float y, float w, float h);
 void handleCameraInput(AppState& app, GLFWwindow* window, float x, float y, float w, float h);
 
 // One-letter pane names used everywhere in the GUI: A, B, C, D.
-inline char paneLetter(int pane) { return static_cast<char>('A' + pane); }
+inline char paneLetter(int pane) {
+  return static_cast<char>('A' + pane);
+}
 
 }  // namespace ll::gui

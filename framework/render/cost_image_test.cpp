@@ -22,10 +22,12 @@ TEST(CostImage, BruteForceTestsEveryPrimitiveForEveryPixel) {
   const Image counts = accelCostImage(*none, camera, CostMetric::PrimitivesTested);
   ASSERT_EQ(counts.width(), 24);
   ASSERT_EQ(counts.height(), 16);
-  for (const Rgb& c : counts.pixels()) EXPECT_EQ(c, Rgb(static_cast<float>(scene.geometry.primitiveCount())));
+  for (const Rgb& c : counts.pixels())
+    EXPECT_EQ(c, Rgb(static_cast<float>(scene.geometry.primitiveCount())));
   float used = 0.0f;
   const Image heat = costHeatmap(counts, 0.0f, &used);
-  EXPECT_EQ(used, static_cast<float>(scene.geometry.primitiveCount()));  // every value is the 99th percentile
+  EXPECT_EQ(used, static_cast<float>(
+                      scene.geometry.primitiveCount()));  // every value is the 99th percentile
   EXPECT_EQ(heat.at(3, 4), errorColormap(1.0f));
 }
 
