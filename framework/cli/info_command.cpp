@@ -55,17 +55,17 @@ nlohmann::json describe(const Scene& s) {
 void printList() {
   std::printf("techniques:\n");
   for (const TechniqueInfo& t : techniques()) {
-    std::printf("  %-12s %s\n", t.name.c_str(), t.help.c_str());
-    std::printf("  %-12s simulates: %s\n", "", joinNames(t.simulates.names()).c_str());
+    std::printf("  %-16s %s\n", t.name.c_str(), t.help.c_str());
+    std::printf("  %-16s simulates: %s\n", "", joinNames(t.simulates.names()).c_str());
     for (const ParamDecl& p : t.params)
-      std::printf("  %-12s --set %s=%s  (%s %s) %s\n", "", p.name.c_str(), p.defaultValue.c_str(),
+      std::printf("  %-16s --set %s=%s  (%s %s) %s\n", "", p.name.c_str(), p.defaultValue.c_str(),
                   p.typeName().c_str(), p.rangeText().c_str(), p.help.c_str());
   }
   std::printf("accelerators:\n");
   for (const AcceleratorInfo& a : accelerators()) {
-    std::printf("  %-12s %s\n", a.name.c_str(), a.help.c_str());
+    std::printf("  %-16s %s\n", a.name.c_str(), a.help.c_str());
     for (const ParamDecl& p : a.params)
-      std::printf("  %-12s --set %s=%s  (%s %s) %s\n", "", p.name.c_str(), p.defaultValue.c_str(),
+      std::printf("  %-16s --set %s=%s  (%s %s) %s\n", "", p.name.c_str(), p.defaultValue.c_str(),
                   p.typeName().c_str(), p.rangeText().c_str(), p.help.c_str());
   }
 }
@@ -100,7 +100,7 @@ Command addInfoCommand(CLI::App& app, const GlobalOptions&) {
                 cheapest ? cheapest->name.c_str() : "(no registered technique simulates all of these effects)");
     for (const TechniqueInfo& t : techniques()) {
       const EffectSet missed = scene.effects.minus(t.simulates);
-      std::printf("  %-10s %s\n", t.name.c_str(),
+      std::printf("  %-16s %s\n", t.name.c_str(),
                   missed.empty() ? "simulates all" : ("misses " + joinNames(missed.names())).c_str());
     }
   };

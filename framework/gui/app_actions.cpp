@@ -360,8 +360,15 @@ void refreshPanes(AppState& app) {
   for (int i = 0; i < kMaxPanes; ++i) {
     PaneState& pane = app.panes[static_cast<size_t>(i)];
     if (auto e = pane.errorMail->take()) {
-      pane.error = *e;
+      pane.error = e->error;
       pane.hasError = true;
+      if (e->request != pane.errorHistoryRequest) pane.errorHistory.clear();
+      pane.errorHistoryRequest = e->request;
+      // One point per pass of this pane; a newer reference only refreshes the last point.
+      if (!pane.errorHistory.empty() && e->seconds <= pane.errorHistory.back().first)
+        pane.errorHistory.back().second = e->error.rmse;
+      else
+        pane.errorHistory.emplace_back(e->seconds, e->error.rmse);
     }
     const PaneSnapshot* refShot = ref >= 0 && ref < kMaxPanes && i != ref
                                       ? &app.panes[static_cast<size_t>(ref)].shown
@@ -381,9 +388,8 @@ void refreshPanes(AppState& app) {
     pane.errorVersions[0] = pane.shown.version;
     pane.errorVersions[1] = refShot->version;
     bg.post("error " + std::to_string(i),
-            [a = pane.shown.image, b = refShot->image, mail = pane.errorMail] {
-              mail->put(compareImages(*a, *b));
-            });
+            [a = pane.shown.image, b = refShot->image, mail = pane.errorMail, t = pane.shown.seconds,
+             req = pane.shown.imageRequest] { mail->put({compareImages(*a, *b), t, req}); });
   }
 
   // The difference heatmap of A against B.

@@ -45,7 +45,15 @@ struct PaneState {
   // Error against the reference pane, recomputed (in the background) when either image changes.
   bool hasError = false;
   ImageError error;
-  std::shared_ptr<Mailbox<ImageError>> errorMail = std::make_shared<Mailbox<ImageError>>();
+  struct ErrorSample {
+    ImageError error;
+    double seconds = 0.0;  // the pane's render time when its image was taken
+    uint64_t request = 0;  // the pane's request the image belongs to
+  };
+  std::shared_ptr<Mailbox<ErrorSample>> errorMail = std::make_shared<Mailbox<ErrorSample>>();
+  // Error against the reference over the current request's passes: (seconds, RMSE), for the live plot.
+  std::vector<std::pair<double, double>> errorHistory;
+  uint64_t errorHistoryRequest = 0;
   uint64_t errorVersions[2] = {0, 0};
   // The structure overlay: nodes of the pane's accelerator at the chosen depth (cached).
   std::shared_ptr<const Accelerator> overlayAccel;

@@ -1,6 +1,7 @@
 #include "gui/side_panel.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -166,11 +167,44 @@ void statsTable(const PaneState& p) {
     ImGui::EndTable();
   }
   const auto& a = s.stats.accel;
-  ImGui::Text("accel build %.3f s, %zu nodes, %.1f KiB", s.buildSeconds, a.nodeCount,
+  ImGui::Text("accel build %.3f s, %zu nodes, depth %d, %.1f KiB", s.buildSeconds, a.nodeCount, a.depth,
               static_cast<double>(a.memoryBytes) / 1024.0);
+  if (a.sahCost > 0.0) ImGui::Text("SAH cost %.2f", a.sahCost);
+  if (s.stats.work.query.nodesVisited + s.stats.work.query.primitivesTested > 0 && rays > 0)
+    ImGui::Text("per ray: %.1f nodes visited, %.1f primitives tested",
+                static_cast<double>(s.stats.work.query.nodesVisited) / rays,
+                static_cast<double>(s.stats.work.query.primitivesTested) / rays);
   if (s.stats.work.nonFinite > 0)
     ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%llu NaN/Inf samples replaced by 0",
                        static_cast<unsigned long long>(s.stats.work.nonFinite));
+}
+
+// RMSE against the reference over render time, log-log (the slope of Monte
+// Carlo convergence is -1/2), as passes arrive. Needs two points.
+void errorPlot(const PaneState& p) {
+  const auto& h = p.errorHistory;
+  std::vector<std::pair<double, double>> pts;
+  for (const auto& [t, e] : h)
+    if (t > 0.0 && e > 0.0) pts.emplace_back(std::log10(t), std::log10(e));
+  if (pts.size() < 2) return;
+  double x0 = pts[0].first, x1 = x0, y0 = pts[0].second, y1 = y0;
+  for (const auto& [x, y] : pts) {
+    x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+  }
+  if (x1 - x0 < 1e-6) x1 = x0 + 1.0;
+  if (y1 - y0 < 1e-6) y1 = y0 + 1.0;
+  ImGui::Text("RMSE vs time (log-log): %.3g s %.4g -> %.3g s %.4g", h.front().first, h.front().second,
+              h.back().first, h.back().second);
+  const float w = ImGui::GetContentRegionAvail().x, hgt = 80.0f * ImGui::GetIO().FontGlobalScale;
+  const ImVec2 o = ImGui::GetCursorScreenPos();
+  ImGui::Dummy(ImVec2(w, hgt));
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  dl->AddRect(o, ImVec2(o.x + w, o.y + hgt), IM_COL32(120, 120, 120, 255));
+  const auto at = [&](const std::pair<double, double>& q) {
+    return ImVec2(o.x + 4.0f + static_cast<float>((q.first - x0) / (x1 - x0)) * (w - 8.0f),
+                  o.y + hgt - 4.0f - static_cast<float>((q.second - y0) / (y1 - y0)) * (hgt - 8.0f));
+  };
+  for (size_t k = 1; k < pts.size(); ++k) dl->AddLine(at(pts[k - 1]), at(pts[k]), IM_COL32(255, 190, 60, 255), 2.0f);
 }
 
 void paneSection(AppState& app, int i) {
@@ -231,6 +265,7 @@ void paneSection(AppState& app, int i) {
   if (p.hasError)
     ImGui::Text("vs %c: RMSE %.5g  SSIM %.4f  PSNR %.2f dB", paneLetter(app.compare.reference),
                 p.error.rmse, p.error.ssim, p.error.psnr);
+  if (p.hasError) errorPlot(p);
   for (const auto& [id, what] : p.shown.missingTasks)
     ImGui::TextColored(ImVec4(1, 0.4f, 0.9f, 1), "task %s missing: %s", id.c_str(), what.c_str());
   if (p.shown.phase == PaneSnapshot::Phase::Failed)
