@@ -1,9 +1,10 @@
-// Assignment 4 -- Acceleration structures: a bounding volume hierarchy.
-// The two functions you write. Each lives in its own .cpp file between the
-// markers of its task ID; the accelerator `bvh` (bvh_accelerator.cpp) calls
-// them. Until you write one, its stub reports the task as missing and falls
-// back to brute force (A4.1: one leaf holding everything; A4.2: test every
-// primitive), so renders stay correct -- only slow. See README.md.
+// Assignment 4 -- Acceleration structures: a bounding volume hierarchy, a
+// KD-tree and an octree. The functions you write. Each lives in its own .cpp file between the
+// markers of its task ID; the accelerators `bvh`, `kdtree` and `octree`
+// (*_accelerator.cpp) call them. Until you write one, its stub reports the
+// task as missing and falls back to brute force (A4.1: one leaf holding
+// everything; A4.2-A4.4: test every primitive), so renders stay correct --
+// only slow. See README.md.
 #pragma once
 
 #include <cstddef>
@@ -11,6 +12,8 @@
 
 #include "accel/accelerator.h"
 #include "bvh.h"
+#include "kdtree.h"
+#include "octree.h"
 
 namespace ll::a4 {
 
@@ -43,5 +46,31 @@ bool intersectBvh(const FlatBvh& bvh, const Ray& ray, Hit& hit, QueryCounters& c
 // A4.2 (any hit): whether anything is hit with ray.tmin < t < ray.tmax; stop
 // at the first primitive hit (anyPrimitiveHit()).
 bool occludedBvh(const FlatBvh& bvh, const Ray& ray, QueryCounters& counters);
+
+// A4.3 KD-tree traversal. The closest hit of `ray` (ray.tmin < t < ray.tmax)
+// among the primitives in `tree`, exactly as brute force finds it
+// (closerPrimitiveHit() in leaves; a primitive may sit in several leaves).
+// Clip the ray to tree.bounds, then walk front to back: at an interior node
+// the cell's interval [tNear, tFar] is cut where the ray crosses the split
+// plane; visit the child on the origin's side first and keep the other one
+// with its interval on a stack of kKdStackSize entries. Axis-parallel rays
+// never cross (tSplit = +-infinity), or lie in the plane (NaN: both
+// children, the whole interval). Stop once the closest hit lies inside the
+// current cell (allow r.tSlack for rounding); a hit beyond the cell's end
+// may still lose to the next cell. Count nodes and primitives as in A4.2.
+bool intersectKdTree(const KdTree& tree, const Ray& ray, Hit& hit, QueryCounters& counters);
+
+// A4.3 (any hit): whether anything is hit with ray.tmin < t < ray.tmax.
+bool occludedKdTree(const KdTree& tree, const Ray& ray, QueryCounters& counters);
+
+// A4.4 Octree traversal. The closest hit as in A4.3. At an interior node
+// find which of the eight children (octreeChildCell()) the ray enters and
+// where, visit them nearest first (the others on a stack of
+// kOctreeStackSize entries, with their cells), and stop once the closest hit
+// lies inside the current cell.
+bool intersectOctree(const Octree& tree, const Ray& ray, Hit& hit, QueryCounters& counters);
+
+// A4.4 (any hit): whether anything is hit with ray.tmin < t < ray.tmax.
+bool occludedOctree(const Octree& tree, const Ray& ray, QueryCounters& counters);
 
 }  // namespace ll::a4

@@ -12,6 +12,7 @@
 
 #include "accel/accelerator.h"
 #include "core/math.h"
+#include "leaf_primitives.h"
 #include "scene/geometry.h"
 
 namespace ll::a4 {
@@ -50,25 +51,15 @@ struct BvhNode {
 };
 static_assert(sizeof(BvhNode) == 32, "BvhNode is meant to fill half a cache line");
 
-// A triangle's vertices copied into leaf order (the very same floats as the
-// Geometry's, so tests give bit-identical t to brute force).
-struct LeafTriangle {
-  Vec3 p0, p1, p2;
-};
-
 // Deepest tree the build makes; traversal stacks hold this many entries.
 constexpr int kBvhMaxDepth = 96;
 constexpr int kBvhStackSize = kBvhMaxDepth;
 
-struct FlatBvh {
-  const Geometry* geometry = nullptr;
+// The leaf slots (LeafPrimitives: geometry, primIds, triangles, ...) hold
+// every primitive exactly once.
+struct FlatBvh : LeafPrimitives {
   BoundingVolume volume = BoundingVolume::Box;
-  std::vector<BvhNode> nodes;             // nodes[0] is the root; empty when there are no primitives
-  std::vector<uint32_t> primIds;          // slot -> primitive id in the Geometry
-  std::vector<LeafTriangle> triangles;    // slot -> vertices, when primIds[slot] is a triangle
-  uint32_t triangleCount = 0;             // primitive ids below this are triangles
-  Vec3 sceneCentre{0.0f};                 // a sphere holding every primitive, for rounding bounds
-  float sceneRadius = 0.0f;
+  std::vector<BvhNode> nodes;  // nodes[0] is the root; empty when there are no primitives
 };
 
 // What the build reports (AcceleratorStats without the build time).

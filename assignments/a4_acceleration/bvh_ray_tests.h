@@ -1,5 +1,5 @@
-// The tests a BVH traversal is made of, inline because they are its inner
-// loop: ray against a node's box or sphere (conservative: they never miss a
+// The tests a tree traversal is made of (BVH, KD-tree, octree), inline
+// because they are its inner loop: ray against a node's box or sphere (conservative: they never miss a
 // volume whose primitives the ray hits), and ray against the primitive in a
 // leaf slot (bit-identical to brute force, ties broken as brute force does).
 // Framework code: nothing to edit here.
@@ -11,6 +11,7 @@
 #include <limits>
 
 #include "bvh.h"
+#include "leaf_primitives.h"
 
 namespace ll::a4 {
 
@@ -22,7 +23,7 @@ struct TraversalRay {
   bool negX, negY, negZ;   // dir component < 0 (or -0): the slab's near plane is hi
   float invLength2;        // 1 / |dir|^2
   float tSlack;            // rounding of any t computed in this scene, in t units (see cullLimit)
-  TraversalRay(const Ray& r, const FlatBvh& bvh)
+  TraversalRay(const Ray& r, const LeafPrimitives& bvh)
       : ray(r), wray(r), invDir(1.0f / r.dir.x, 1.0f / r.dir.y, 1.0f / r.dir.z),
         negX(invDir.x < 0.0f), negY(invDir.y < 0.0f), negZ(invDir.z < 0.0f),
         invLength2(1.0f / glm::dot(r.dir, r.dir)),
@@ -95,7 +96,7 @@ inline float nextFloatUp(float t) {
 // would keep: the smallest t in (ray.tmin, ray.tmax), on equal t the smaller
 // primitive id. Start with hit = Hit{} and hit.t = ray.tmax. Returns whether
 // `hit` changed.
-inline bool closerPrimitiveHit(const FlatBvh& bvh, uint32_t slot, const TraversalRay& r, Hit& hit) {
+inline bool closerPrimitiveHit(const LeafPrimitives& bvh, uint32_t slot, const TraversalRay& r, Hit& hit) {
   const uint32_t prim = bvh.primIds[slot];
   const float tmax = (hit.prim != Hit::kNone && prim < hit.prim) ? nextFloatUp(hit.t) : hit.t;
   float t, b1 = 0.0f, b2 = 0.0f;
@@ -114,7 +115,7 @@ inline bool closerPrimitiveHit(const FlatBvh& bvh, uint32_t slot, const Traversa
 }
 
 // Whether the primitive in leaf slot `slot` is hit with ray.tmin < t < ray.tmax.
-inline bool anyPrimitiveHit(const FlatBvh& bvh, uint32_t slot, const TraversalRay& r) {
+inline bool anyPrimitiveHit(const LeafPrimitives& bvh, uint32_t slot, const TraversalRay& r) {
   const uint32_t prim = bvh.primIds[slot];
   float t, b1, b2;
   if (prim < bvh.triangleCount) {

@@ -18,6 +18,8 @@
 #define LIGHTLAB_ACCELERATORS(X) \
   X(bruteForceAccelerator)       \
   X(bvhAccelerator)              \
+  X(kdtreeAccelerator)           \
+  X(octreeAccelerator)           \
   LIGHTLAB_EMBREE_ACCELERATOR(X)
 
 #define LIGHTLAB_TECHNIQUES(X) \

@@ -1,0 +1,178 @@
+// Building the KD-tree (framework code): top-down, one axis-aligned plane per
+// node chosen by the surface area heuristic among the bin boundaries of each
+// axis of the node's cell; primitives whose (cell-clipped) box reaches across
+// the plane go to both children. Written depth-first straight into 8-byte
+// nodes; statistics (nodes, depth, memory, SAH cost) on the way.
+#include "kdtree.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace ll::a4 {
+
+namespace {
+
+// A primitive as one node's build sees it: its box clipped to the node's cell (world space).
+struct KdPrim {
+  Bounds3 box;
+  uint32_t prim = 0;
+};
+
+float halfArea(const Bounds3& b) {
+  const Vec3 e = glm::max(b.max - b.min, Vec3(0.0f));
+  return e.x * e.y + e.y * e.z + e.z * e.x;
+}
+
+struct Plane {
+  int axis = -1;  // -1: no plane found
+  float position = 0.0f;
+  float cost = kInfinity;
+};
+
+constexpr int kMaxBins = 64;
+
+class Builder {
+ public:
+  Builder(KdTree& tree, const KdSettings& s, int maxDepth) : tree_(tree), s_(s), maxDepth_(maxDepth) {}
+
+  // Appends the subtree of the cell `cell` holding `prims` (consumed) at the end of tree_.nodes.
+  void build(std::vector<KdPrim>& prims, const Bounds3& cell, int depth, int badRefines) {
+    const auto index = static_cast<uint32_t>(tree_.nodes.size());
+    tree_.nodes.emplace_back();
+    depth_ = std::max(depth_, depth);
+    const size_t n = prims.size();
+    const double area = halfArea(cell);
+    if (n <= static_cast<size_t>(s_.maxLeaf) || depth >= maxDepth_) return makeLeaf(index, prims, area);
+    const Plane plane = bestPlane(prims, cell);
+    const float leafCost = s_.intersectionCost * static_cast<float>(n);
+    if (plane.axis < 0) return makeLeaf(index, prims, area);
+    if (plane.cost >= leafCost) ++badRefines;  // PBRT: allow a few uphill splits to get out of local minima
+    if ((plane.cost > 4.0f * leafCost && n < 16) || badRefines >= 3) return makeLeaf(index, prims, area);
+
+    // Partition: below if the box starts below the plane, above if it ends
+    // above it; a box lying in the plane (planar primitive) goes above. So
+    // every primitive goes somewhere, and a hit point on the plane is in a
+    // cell holding its primitive.
+    const int a = plane.axis;
+    const float split = plane.position;
+    std::vector<KdPrim> below, above;
+    below.reserve(n);
+    above.reserve(n);
+    for (const KdPrim& p : prims) {
+      if (p.box.min[a] < split) {
+        KdPrim q = p;
+        q.box.max[a] = std::min(q.box.max[a], split);
+        below.push_back(q);
+      }
+      if (p.box.max[a] > split || (p.box.min[a] == split && p.box.max[a] == split)) {
+        KdPrim q = p;
+        q.box.min[a] = std::max(q.box.min[a], split);
+        above.push_back(q);
+      }
+    }
+    std::vector<KdPrim>().swap(prims);  // free before recursing
+    Bounds3 cellBelow = cell, cellAbove = cell;
+    cellBelow.max[a] = split;
+    cellAbove.min[a] = split;
+    sah_ += static_cast<double>(s_.traversalCost) * area;
+    build(below, cellBelow, depth + 1, badRefines);
+    tree_.nodes[index] = KdNode::interior(a, split, static_cast<uint32_t>(tree_.nodes.size()));
+    build(above, cellAbove, depth + 1, badRefines);
+  }
+
+  int depth() const { return depth_; }
+  double sahSum() const { return sah_; }  // sum of cost * half area (divide by the root's)
+
+ private:
+  void makeLeaf(uint32_t index, const std::vector<KdPrim>& prims, double area) {
+    tree_.nodes[index] =
+        KdNode::leafNode(static_cast<uint32_t>(tree_.primIds.size()), static_cast<uint32_t>(prims.size()));
+    for (const KdPrim& p : prims) tree_.append(p.prim);
+    sah_ += static_cast<double>(s_.intersectionCost) * static_cast<double>(prims.size()) * area;
+  }
+
+  // The cheapest bin boundary over all three axes: counts of boxes starting
+  // and ending in each bin give the primitives on each side in O(bins).
+  Plane bestPlane(const std::vector<KdPrim>& prims, const Bounds3& cell) const {
+    Plane best;
+    const int bins = std::clamp(s_.bins, 2, kMaxBins);
+    const float n = static_cast<float>(prims.size());
+    const float invArea = 1.0f / halfArea(cell);
+    for (int a = 0; a < 3; ++a) {
+      const float lo = cell.min[a], hi = cell.max[a];
+      if (!(hi > lo)) continue;
+      const float scale = static_cast<float>(bins) / (hi - lo);
+      std::array<uint32_t, kMaxBins> starts{}, ends{};
+      auto binOf = [&](float x) { return static_cast<size_t>(std::clamp(static_cast<int>((x - lo) * scale), 0, bins - 1)); };
+      for (const KdPrim& p : prims) {
+        ++starts[binOf(p.box.min[a])];
+        ++ends[binOf(p.box.max[a])];
+      }
+      uint32_t nBelow = 0, nEnded = 0;
+      for (int b = 1; b < bins; ++b) {
+        nBelow += starts[static_cast<size_t>(b - 1)];  // boxes starting below boundary b
+        nEnded += ends[static_cast<size_t>(b - 1)];    // boxes ending below boundary b
+        const float position = lo + (hi - lo) * (static_cast<float>(b) / static_cast<float>(bins));
+        if (!(position > lo && position < hi)) continue;
+        Bounds3 cb = cell, ca = cell;
+        cb.max[a] = position;
+        ca.min[a] = position;
+        const float nB = static_cast<float>(nBelow), nA = n - static_cast<float>(nEnded);
+        const float bonus = (nBelow == 0 || nA == 0.0f) ? 1.0f - s_.emptyBonus : 1.0f;
+        const float cost =
+            s_.traversalCost + bonus * s_.intersectionCost * invArea * (halfArea(cb) * nB + halfArea(ca) * nA);
+        if (cost < best.cost) best = {a, position, cost};
+      }
+    }
+    return best;
+  }
+
+  KdTree& tree_;
+  const KdSettings& s_;
+  int maxDepth_;
+  int depth_ = 0;
+  double sah_ = 0.0;
+};
+
+}  // namespace
+
+KdTree buildKdTree(const Geometry& geometry, const KdSettings& settings, KdBuildInfo* info) {
+  KdTree tree;
+  tree.geometry = &geometry;
+  tree.triangleCount = geometry.triangleCount();
+  const uint32_t n = geometry.primitiveCount();
+  int depth = 0;
+  double sah = 0.0;
+  if (n > 0) {
+    std::vector<KdPrim> prims(n);
+    for (uint32_t p = 0; p < n; ++p) {
+      prims[p] = {geometry.bounds(p), p};
+      tree.bounds.extend(prims[p].box);
+    }
+    tree.sceneCentre = tree.bounds.center();
+    tree.sceneRadius = 0.5f * tree.bounds.diagonal();
+    const int autoDepth = static_cast<int>(std::lround(8.0 + 1.3 * std::log2(static_cast<double>(n))));
+    const int maxDepth = std::clamp(settings.maxDepth > 0 ? settings.maxDepth : autoDepth, 0, kKdMaxDepth);
+    tree.primIds.reserve(2 * static_cast<size_t>(n));
+    tree.triangles.reserve(2 * static_cast<size_t>(n));
+    Builder builder(tree, settings, maxDepth);
+    builder.build(prims, tree.bounds, 0, 0);
+    depth = builder.depth();
+    const double rootArea = halfArea(tree.bounds);
+    sah = rootArea > 0.0 ? builder.sahSum() / rootArea : static_cast<double>(settings.intersectionCost) * n;
+    tree.nodes.shrink_to_fit();
+    tree.primIds.shrink_to_fit();
+    tree.triangles.shrink_to_fit();
+  }
+  if (info) {
+    info->nodeCount = tree.nodes.size();
+    info->leafSlots = tree.primIds.size();
+    info->depth = depth;
+    info->memoryBytes = tree.nodes.capacity() * sizeof(KdNode) + tree.memoryBytes();
+    info->sahCost = sah;
+  }
+  return tree;
+}
+
+}  // namespace ll::a4
