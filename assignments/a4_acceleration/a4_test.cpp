@@ -1,9 +1,10 @@
 // Assignment 4 (acceleration structures): every registered accelerator, in
 // every configuration, against brute force on the bunny, the Cornell box with
 // the bunny and a hand-made geometry of hard cases; the BVH's structure and
-// statistics; a complexity probe; and the two student tasks.
+// statistics, the KD-tree's and the octree's; a complexity probe for all
+// three; and the four student tasks.
 //
-// Exactness: `bvh` must return brute force's closest hit bit for bit (t,
+// Exactness: `bvh`, `kdtree` and `octree` must return brute force's closest hit bit for bit (t,
 // primitive, barycentrics) and the same occlusion answer. `embree` uses its
 // own triangle test, so t may differ by rounding and a ray exactly through a
 // shared edge or vertex may report the neighbour; hit/miss may differ only on
@@ -22,6 +23,8 @@
 
 #include "a4_tasks.h"
 #include "bvh.h"
+#include "kdtree.h"
+#include "octree.h"
 #include "modules/registry.h"
 #include "render/student_task.h"
 #include "scene/scene_loader.h"
@@ -68,6 +71,14 @@ std::vector<Config> allConfigs() {
           configs.push_back({"bvh", {std::string("split=") + split, std::string("volume=") + volume}});
       configs.push_back({"bvh", {"split=sah", "max_leaf=1", "bins=2"}});
       configs.push_back({"bvh", {"split=median", "max_leaf=64"}});
+    } else if (info.name == "kdtree") {
+      configs.push_back({"kdtree", {}});
+      configs.push_back({"kdtree", {"max_leaf=1", "intersection_cost=4", "empty_bonus=0.9", "bins=2"}});
+      configs.push_back({"kdtree", {"max_depth=3", "max_leaf=64", "traversal_cost=10"}});
+    } else if (info.name == "octree") {
+      configs.push_back({"octree", {}});
+      configs.push_back({"octree", {"max_depth=6", "max_leaf=1"}});
+      configs.push_back({"octree", {"max_depth=1"}});
     } else {
       configs.push_back({info.name, {}});
     }
@@ -267,14 +278,21 @@ void expectMatchesBruteForce(const Geometry& g, const std::vector<Ray>& rays, si
   }
 }
 
-// Whether the BVH runs without stubs (A4.1 and A4.2 written).
-bool bvhImplemented(const Geometry& g) {
-  const auto accel = make({"bvh", {}}, g);
+// Whether `accelerator` runs without the stub of task `id`.
+bool taskImplemented(const Geometry& g, const std::string& accelerator, const char* id) {
+  const auto accel = make({accelerator, {}}, g);
   QueryCounters c;
   Hit h;
   const Ray probe = makeRay(g.sceneBounds().center() - Vec3(0, 0, 100), {0, 0, 1});
-  return implemented("A4.1", [&] { accel->intersect(probe, h, c); }) &&
-         implemented("A4.2", [&] { accel->intersect(probe, h, c); });
+  return implemented(id, [&] { accel->intersect(probe, h, c); });
+}
+
+// Whether the BVH runs without stubs (A4.1 and A4.2 written).
+bool bvhImplemented(const Geometry& g) { return taskImplemented(g, "bvh", "A4.1") && taskImplemented(g, "bvh", "A4.2"); }
+
+// Whether every A4 task is written (else the scene tests use fewer rays: stubs are brute force).
+bool allImplemented(const Geometry& g) {
+  return bvhImplemented(g) && taskImplemented(g, "kdtree", "A4.3") && taskImplemented(g, "octree", "A4.4");
 }
 
 // Checks rays [half * 50k, half * 50k + 50k) of the scene's 100k: two test
@@ -282,7 +300,7 @@ bool bvhImplemented(const Geometry& g) {
 void checkScene(const std::string& file, int half) {
   const Scene scene = loadScene(std::string(LIGHTLAB_DATA_DIR) + "/scenes/" + file);
   // With a stub the BVH is brute force: still checked, on fewer rays to stay quick.
-  const size_t total = bvhImplemented(scene.geometry) ? 100000 : 4000;  // halves: multiples of 8 (see grazing())
+  const size_t total = allImplemented(scene.geometry) ? 100000 : 4000;  // halves: multiples of 8 (see grazing())
   const std::vector<Ray> all = makeRays(scene.geometry, total, 4242);
   const auto begin = all.begin() + static_cast<std::ptrdiff_t>(half * total / 2);
   const std::vector<Ray> rays(begin, begin + static_cast<std::ptrdiff_t>(total / 2));
@@ -478,23 +496,26 @@ Geometry sphereMesh(int rings) {  // a UV sphere of about 4 rings^2 triangles
   return g;
 }
 
+// Counted work (nodes visited, primitives tested) per ray, never time.
+std::pair<double, double> workPerRay(const Geometry& g, const Config& config) {
+  const auto a = make(config, g);
+  std::mt19937 rng(5);
+  QueryCounters c;
+  const int n = 20000;
+  for (int i = 0; i < n; ++i) {
+    const Vec3 o = 3.0f * randomDirection(rng);
+    const Vec3 target = 0.5f * randomDirection(rng);
+    Hit h;
+    a->intersect(makeRay(o, target - o), h, c);
+  }
+  return {double(c.nodesVisited) / n, double(c.primitivesTested) / n};
+}
+
 TEST(A4_Bvh, NodesVisitedGrowLogarithmically) {
   const Geometry small = sphereMesh(24), large = sphereMesh(192);  // 2.3k and 147k triangles: 64x
   ASSERT_TRUE(bvhImplemented(small));
   ASSERT_GT(large.primitiveCount(), 60 * small.primitiveCount());
-  auto perRay = [](const Geometry& g, const std::string& split) {
-    const auto a = make({"bvh", {"split=" + split}}, g);
-    std::mt19937 rng(5);
-    QueryCounters c;
-    const int n = 20000;
-    for (int i = 0; i < n; ++i) {
-      const Vec3 o = 3.0f * randomDirection(rng);
-      const Vec3 target = 0.5f * randomDirection(rng);
-      Hit h;
-      a->intersect(makeRay(o, target - o), h, c);
-    }
-    return std::pair(double(c.nodesVisited) / n, double(c.primitivesTested) / n);
-  };
+  auto perRay = [](const Geometry& g, const std::string& split) { return workPerRay(g, {"bvh", {"split=" + split}}); };
   for (const char* split : {"median", "equal-counts", "sah"}) {
     const auto [nodesSmall, primsSmall] = perRay(small, split);
     const auto [nodesLarge, primsLarge] = perRay(large, split);
@@ -595,6 +616,184 @@ TEST(A4_Stubs, BvhStaysCorrectWhateverIsMissing) {
   const ScopedTaskLog scope(&log);
   expectMatchesBruteForce(g, rays, rays.size(), ref, {Config{"bvh", {}}});
   for (const auto& [id, what] : log.missing()) EXPECT_TRUE(id == "A4.1" || id == "A4.2") << id;
+}
+
+
+// --- The KD-tree and the octree: structure, statistics, complexity, tasks ---------------
+
+// Every primitive is referenced by the leaf cells its box touches (at least
+// one), and every referenced primitive's box touches its leaf's cell.
+template <class Shapes>
+void expectCellsCoverPrimitives(const Shapes& leaves, const Geometry& g, size_t slots) {
+  size_t total = 0;
+  for (const NodeShape& s : leaves) EXPECT_TRUE(s.leaf);
+  std::vector<int> touched(g.primitiveCount(), 0);
+  for (uint32_t p = 0; p < g.primitiveCount(); ++p) {
+    const Bounds3 b = g.bounds(p);
+    for (const NodeShape& s : leaves)
+      if (glm::all(glm::lessThanEqual(b.min, s.box.max)) && glm::all(glm::greaterThanEqual(b.max, s.box.min)))
+        ++touched[p];
+    EXPECT_GE(touched[p], 1) << "primitive " << p << " lies in no leaf cell";
+    total += static_cast<size_t>(touched[p]);
+  }
+  EXPECT_GE(total, slots);  // no leaf holds a primitive whose box misses its cell
+}
+
+TEST(A4_KdTree, WellFormedWithPlanarPrimitivesAndStatistics) {
+  const Geometry h = hardCases();
+  a4::KdBuildInfo info;
+  const a4::KdTree tree = a4::buildKdTree(h, a4::KdSettings{}, &info);
+  ASSERT_FALSE(tree.nodes.empty());
+  std::vector<int> seen(h.primitiveCount(), 0);
+  for (const a4::KdNode& n : tree.nodes) {
+    if (!n.isLeaf()) {
+      EXPECT_LT(n.aboveChild(), tree.nodes.size());
+      continue;
+    }
+    for (uint32_t s = n.first(); s < n.first() + n.count(); ++s) ++seen[tree.primIds[s]];
+  }
+  for (uint32_t p = 0; p < h.primitiveCount(); ++p) EXPECT_GE(seen[p], 1) << "primitive " << p;
+  EXPECT_LE(info.depth, a4::kKdMaxDepth);
+  EXPECT_GE(info.leafSlots, h.primitiveCount());
+  const auto accel = make({"kdtree", {}}, h);
+  const auto leaves = accel->nodesAtDepth(1000);  // every leaf
+  expectCellsCoverPrimitives(leaves, h, info.leafSlots);
+  EXPECT_EQ(accel->nodesAtDepth(0).size(), 1u);
+  EXPECT_EQ(accel->nodesAtDepth(1).size(), 2u);
+
+  const Geometry g = bunny();
+  const AcceleratorStats st = make({"kdtree", {}}, g)->stats();
+  EXPECT_GT(st.nodeCount, g.primitiveCount() / 4);
+  EXPECT_GE(st.memoryBytes, st.nodeCount * sizeof(a4::KdNode) + g.primitiveCount() * sizeof(uint32_t));
+  EXPECT_GT(st.depth, 5);
+  EXPECT_GT(st.sahCost, 1.0);
+  EXPECT_GE(st.buildSeconds, 0.0);
+}
+
+TEST(A4_Octree, WellFormedAndStatistics) {
+  const Geometry h = hardCases();
+  a4::OctreeSettings s;
+  s.maxDepth = 5;
+  s.maxLeaf = 2;
+  a4::OctreeBuildInfo info;
+  const a4::Octree tree = a4::buildOctree(h, s, &info);
+  ASSERT_FALSE(tree.nodes.empty());
+  EXPECT_EQ((tree.nodes.size() - 1) % 8, 0u);
+  EXPECT_LE(info.depth, 5);
+  const auto accel = make({"octree", {"max_depth=5", "max_leaf=2"}}, h);
+  expectCellsCoverPrimitives(accel->nodesAtDepth(1000), h, info.leafSlots);
+  EXPECT_EQ(accel->nodesAtDepth(0).size(), 1u);
+  EXPECT_LE(accel->nodesAtDepth(1).size(), 8u);
+
+  const Geometry g = bunny();
+  const AcceleratorStats st = make({"octree", {}}, g)->stats();
+  EXPECT_GT(st.nodeCount, 64u);
+  EXPECT_GE(st.memoryBytes, st.nodeCount * sizeof(a4::OctreeNode) + g.primitiveCount() * sizeof(uint32_t));
+  EXPECT_GT(st.depth, 3);
+  EXPECT_GT(st.sahCost, 1.0);
+}
+
+// A sphere made of a cube's six faces, k x k quads each, pushed out onto the
+// unit sphere: 12 k^2 triangles, no vertex shared by more than six (a UV
+// sphere's poles are shared by 4 rings triangles: a cell holding a pole holds
+// them all, however small -- a worst case for space subdivision, not a test
+// of how the work grows).
+Geometry cubeSphere(int k) {
+  Geometry g;
+  for (int axis = 0; axis < 3; ++axis)
+    for (float side : {-1.0f, 1.0f}) {
+      auto at = [&](int i, int j) {
+        Vec3 p;
+        p[axis] = side;
+        p[(axis + 1) % 3] = 2.0f * float(i) / float(k) - 1.0f;
+        p[(axis + 2) % 3] = 2.0f * float(j) / float(k) - 1.0f;
+        return glm::normalize(p);
+      };
+      for (int i = 0; i < k; ++i)
+        for (int j = 0; j < k; ++j) {
+          addTriangle(g, at(i, j), at(i + 1, j), at(i + 1, j + 1));
+          addTriangle(g, at(i, j), at(i + 1, j + 1), at(i, j + 1));
+        }
+    }
+  return g;
+}
+
+TEST(A4_SpaceSubdivision, NodesVisitedGrowLogarithmically) {
+  const Geometry small = cubeSphere(14), large = cubeSphere(112);  // 2.4k and 151k triangles: 64x
+  for (const char* name : {"kdtree", "octree"}) {
+    const char* task = std::string(name) == "kdtree" ? "A4.3" : "A4.4";
+    if (!taskImplemented(small, name, task)) {
+      ADD_FAILURE() << task << " not implemented";
+      continue;
+    }
+    // The octree's depth limit must not cap the large mesh: let it go two levels deeper.
+    const Config cs{name, {}}, cl{name, std::string(name) == "octree" ? std::vector<std::string>{"max_depth=10"}
+                                                                        : std::vector<std::string>{}};
+    const auto [nodesSmall, primsSmall] = workPerRay(small, cs);
+    const auto [nodesLarge, primsLarge] = workPerRay(large, cl);
+    std::printf("[ %s ] per ray: %.1f -> %.1f nodes, %.1f -> %.1f primitives\n", name, nodesSmall, nodesLarge,
+                primsSmall, primsLarge);
+    EXPECT_LT(nodesLarge / nodesSmall, 2.5) << name << ": " << nodesSmall << " -> " << nodesLarge << " nodes/ray";
+    EXPECT_LT(primsLarge / primsSmall, 2.5) << name << ": " << primsSmall << " -> " << primsLarge << " prims/ray";
+  }
+}
+
+// A4.3 and A4.4: few nodes and primitives, and any hit stops early.
+void expectTraversalWork(const std::string& name, const char* task) {
+  const Geometry g = bunny();
+  const auto accel = make({name, {}}, g);
+  const Ray ray = makeRay(g.sceneBounds().center() + Vec3(0, 0, 10), {0, 0, -1});
+  Hit h;
+  QueryCounters c;
+  ASSERT_TRUE(implemented(task, [&] { accel->intersect(ray, h, c); }));
+  ASSERT_TRUE(implemented(task, [&] { accel->occluded(ray, c); }));
+  QueryCounters closest, any;
+  std::mt19937 rng(3);
+  for (int i = 0; i < 1000; ++i) {
+    const Vec3 o = g.sceneBounds().center() + 2.0f * g.sceneBounds().diagonal() * randomDirection(rng);
+    const Ray r = makeRay(o, g.sceneBounds().center() - o);
+    accel->intersect(r, h, closest);
+    accel->occluded(r, any);
+  }
+  EXPECT_LT(closest.primitivesTested, 1000u * g.primitiveCount() / 50);  // far from brute force
+  EXPECT_GT(closest.nodesVisited, 1000u);
+  EXPECT_LE(any.nodesVisited, closest.nodesVisited);  // any hit stops early
+}
+
+TEST(A4_3_KdTraversal, VisitsFewNodesAndStopsAtTheFirstOccluder) { expectTraversalWork("kdtree", "A4.3"); }
+TEST(A4_4_OctreeTraversal, VisitsFewNodesAndStopsAtTheFirstOccluder) { expectTraversalWork("octree", "A4.4"); }
+
+// A ray in a split plane: the triangles on both sides of the plane count.
+TEST(A4_3_KdTraversal, RaysInTheSplitPlaneSeeBothSides) {
+  Geometry g;
+  // Two walls of the same cell boundary x = 1 seen edge-on, and a far wall.
+  addQuad(g, {1, 0, 2}, {-0.5f, 0, 0}, {0, 1, 0});  // below the plane x = 1, touching it
+  addQuad(g, {1, 0, 1}, {0.5f, 0, 0}, {0, 1, 0});   // above it, touching it, nearer
+  addQuad(g, {0, 0, 5}, {2, 0, 0}, {0, 1, 0});
+  for (int i = 0; i < 40; ++i) addTriangle(g, {0.1f * float(i % 10), 3, 0}, {0.1f * float(i % 10) + 0.05f, 3, 0}, {0.1f * float(i % 10), 3.05f, 0.1f * float(i / 10)});
+  const Ray ray = makeRay({1, 0.5f, 0}, {0, 0, 1});
+  Hit ref;
+  QueryCounters c;
+  make({"none", {}}, g)->intersect(ray, ref, c);
+  ASSERT_TRUE(ref.valid());
+  for (const Config& config : allConfigs()) {
+    if (!config.exact()) continue;
+    SCOPED_TRACE(config.label());
+    Hit h;
+    make(config, g)->intersect(ray, h, c);
+    EXPECT_EQ(h.prim, ref.prim);
+    EXPECT_EQ(h.t, ref.t);
+  }
+}
+
+TEST(A4_Stubs, KdTreeAndOctreeStayCorrectWhateverIsMissing) {
+  const Geometry g = bunny();
+  const std::vector<Ray> rays = makeRays(g, 2000, 11);
+  const Reference ref = bruteForce(g, rays);
+  TaskLog log;
+  const ScopedTaskLog scope(&log);
+  expectMatchesBruteForce(g, rays, rays.size(), ref, {Config{"kdtree", {}}, Config{"octree", {}}});
+  for (const auto& [id, what] : log.missing()) EXPECT_TRUE(id == "A4.3" || id == "A4.4") << id;
 }
 
 }  // namespace

@@ -1,8 +1,10 @@
 // Building the KD-tree (framework code): top-down, one axis-aligned plane per
 // node chosen by the surface area heuristic among the bin boundaries of each
-// axis of the node's cell; primitives whose (cell-clipped) box reaches across
-// the plane go to both children. Written depth-first straight into 8-byte
-// nodes; statistics (nodes, depth, memory, SAH cost) on the way.
+// axis of the node's cell; primitives whose box reaches across the plane go
+// to both children, where a triangle's box shrinks to the box of the part of
+// the triangle inside the child's cell ("perfect splits", Havran; padded for
+// rounding). Written depth-first straight into 8-byte nodes; statistics
+// (nodes, depth, memory, SAH cost) on the way.
 #include "kdtree.h"
 
 #include <algorithm>
@@ -32,9 +34,41 @@ struct Plane {
 
 constexpr int kMaxBins = 64;
 
+// The box of the part of triangle (p0, p1, p2) inside `cell` (Sutherland-
+// Hodgman against the six planes), or an empty box if there is none.
+Bounds3 clippedTriangleBox(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Bounds3& cell) {
+  std::array<Vec3, 9> poly{p0, p1, p2}, next{};
+  size_t n = 3;
+  for (int a = 0; a < 3 && n > 0; ++a)
+    for (int side = 0; side < 2 && n > 0; ++side) {
+      const float plane = side == 0 ? cell.min[a] : cell.max[a];
+      auto inside = [&](const Vec3& v) { return side == 0 ? v[a] >= plane : v[a] <= plane; };
+      size_t m = 0;
+      for (size_t i = 0; i < n; ++i) {
+        const Vec3& u = poly[i];
+        const Vec3& v = poly[(i + 1) % n];
+        const bool uIn = inside(u), vIn = inside(v);
+        if (uIn) next[m++] = u;
+        if (uIn != vIn) {
+          const float s = (plane - u[a]) / (v[a] - u[a]);
+          Vec3 x = u + s * (v - u);
+          x[a] = plane;
+          next[m++] = x;
+        }
+      }
+      poly = next;
+      n = m;
+    }
+  Bounds3 b;
+  for (size_t i = 0; i < n; ++i) b.extend(poly[i]);
+  return b;
+}
+
 class Builder {
  public:
-  Builder(KdTree& tree, const KdSettings& s, int maxDepth) : tree_(tree), s_(s), maxDepth_(maxDepth) {}
+  // pad: world-space margin (>= rounding of the clipping) around clipped triangle boxes.
+  Builder(KdTree& tree, const KdSettings& s, int maxDepth, float pad)
+      : tree_(tree), s_(s), maxDepth_(maxDepth), pad_(pad) {}
 
   // Appends the subtree of the cell `cell` holding `prims` (consumed) at the end of tree_.nodes.
   void build(std::vector<KdPrim>& prims, const Bounds3& cell, int depth, int badRefines) {
@@ -56,25 +90,32 @@ class Builder {
     // cell holding its primitive.
     const int a = plane.axis;
     const float split = plane.position;
+    Bounds3 cellBelow = cell, cellAbove = cell;
+    cellBelow.max[a] = split;
+    cellAbove.min[a] = split;
     std::vector<KdPrim> below, above;
     below.reserve(n);
     above.reserve(n);
     for (const KdPrim& p : prims) {
-      if (p.box.min[a] < split) {
+      const bool toBelow = p.box.min[a] < split;
+      const bool toAbove = p.box.max[a] > split || (p.box.min[a] == split && p.box.max[a] == split);
+      if (toBelow && toAbove && p.prim < tree_.triangleCount) {  // a straddling triangle: clip it
+        clipInto(p, cellBelow, below);
+        clipInto(p, cellAbove, above);
+        continue;
+      }
+      if (toBelow) {
         KdPrim q = p;
         q.box.max[a] = std::min(q.box.max[a], split);
         below.push_back(q);
       }
-      if (p.box.max[a] > split || (p.box.min[a] == split && p.box.max[a] == split)) {
+      if (toAbove) {
         KdPrim q = p;
         q.box.min[a] = std::max(q.box.min[a], split);
         above.push_back(q);
       }
     }
     std::vector<KdPrim>().swap(prims);  // free before recursing
-    Bounds3 cellBelow = cell, cellAbove = cell;
-    cellBelow.max[a] = split;
-    cellAbove.min[a] = split;
     sah_ += static_cast<double>(s_.traversalCost) * area;
     build(below, cellBelow, depth + 1, badRefines);
     tree_.nodes[index] = KdNode::interior(a, split, static_cast<uint32_t>(tree_.nodes.size()));
@@ -85,6 +126,23 @@ class Builder {
   double sahSum() const { return sah_; }  // sum of cost * half area (divide by the root's)
 
  private:
+  // Adds triangle p to `out` with its box shrunk to the part inside `cell`
+  // (padded by pad_, within p's box and the cell); not at all if the
+  // triangle stays more than pad_ away from the cell.
+  void clipInto(const KdPrim& p, const Bounds3& cell, std::vector<KdPrim>& out) const {
+    Bounds3 grown = cell;
+    grown.min -= Vec3(pad_);
+    grown.max += Vec3(pad_);
+    const glm::uvec3& t = tree_.geometry->triangles[p.prim];
+    const std::vector<Vec3>& v = tree_.geometry->positions;
+    Bounds3 b = clippedTriangleBox(v[t.x], v[t.y], v[t.z], grown);
+    if (b.empty()) return;
+    b.min = glm::max(b.min - Vec3(pad_), glm::max(p.box.min, cell.min));
+    b.max = glm::min(b.max + Vec3(pad_), glm::min(p.box.max, cell.max));
+    if (b.empty()) return;
+    out.push_back({b, p.prim});
+  }
+
   void makeLeaf(uint32_t index, const std::vector<KdPrim>& prims, double area) {
     tree_.nodes[index] =
         KdNode::leafNode(static_cast<uint32_t>(tree_.primIds.size()), static_cast<uint32_t>(prims.size()));
@@ -124,6 +182,22 @@ class Builder {
             s_.traversalCost + bonus * s_.intersectionCost * invArea * (halfArea(cb) * nB + halfArea(ca) * nA);
         if (cost < best.cost) best = {a, position, cost};
       }
+      // Two more candidates: the faces of the primitives' box, which cut off
+      // the cell's empty space in one step (bin boundaries would nibble at it).
+      float first = hi, last = lo;
+      for (const KdPrim& p : prims) {
+        first = std::min(first, p.box.min[a]);
+        last = std::max(last, p.box.max[a]);
+      }
+      for (const float position : {first, last}) {
+        if (!(position > lo && position < hi)) continue;
+        Bounds3 cb = cell, ca = cell;
+        cb.max[a] = position;
+        ca.min[a] = position;
+        const float side = position == first ? halfArea(ca) : halfArea(cb);  // the side holding all n
+        const float cost = s_.traversalCost + (1.0f - s_.emptyBonus) * s_.intersectionCost * invArea * side * n;
+        if (cost < best.cost) best = {a, position, cost};
+      }
     }
     return best;
   }
@@ -131,6 +205,7 @@ class Builder {
   KdTree& tree_;
   const KdSettings& s_;
   int maxDepth_;
+  float pad_;
   int depth_ = 0;
   double sah_ = 0.0;
 };
@@ -156,7 +231,10 @@ KdTree buildKdTree(const Geometry& geometry, const KdSettings& settings, KdBuild
     const int maxDepth = std::clamp(settings.maxDepth > 0 ? settings.maxDepth : autoDepth, 0, kKdMaxDepth);
     tree.primIds.reserve(2 * static_cast<size_t>(n));
     tree.triangles.reserve(2 * static_cast<size_t>(n));
-    Builder builder(tree, settings, maxDepth);
+    // Clipping rounds by a few ulps of the coordinates: pad by far more.
+    const Vec3 far = glm::max(glm::abs(tree.bounds.min), glm::abs(tree.bounds.max));
+    const float pad = 1e-5f * (std::max({far.x, far.y, far.z}) + tree.bounds.diagonal());
+    Builder builder(tree, settings, maxDepth, pad);
     builder.build(prims, tree.bounds, 0, 0);
     depth = builder.depth();
     const double rootArea = halfArea(tree.bounds);

@@ -39,10 +39,11 @@ bool traverseKd(const KdTree& tree, const TraversalRay& r, Hit& hit, QueryCounte
       const int a = node.axis();
       const float split = node.split(), o = r.ray.origin[a], d = r.ray.dir[a];
       // The ray crosses the plane at tSplit: before it, it is in `first` (the
-      // origin's side; on the plane, the side it comes from), after it in `second`.
-      // Axis-parallel: +-infinity (never crosses), or NaN when it lies in the plane.
+      // origin's side; from an origin on the plane, the side it goes into, as
+      // tSplit = 0), after it in `second`. Axis-parallel: +-infinity (never
+      // crosses), or NaN when it lies in the plane.
       const float tSplit = (split - o) * r.invDir[a];
-      const bool belowFirst = o < split || (o == split && d > 0.0f);
+      const bool belowFirst = o < split || (o == split && d <= 0.0f);
       const uint32_t first = belowFirst ? current + 1 : node.aboveChild();
       const uint32_t second = belowFirst ? node.aboveChild() : current + 1;
       if (tSplit <= 0.0f || tSplit > tFar + r.tSlack) {  // only the origin's side (the sign is exact)
