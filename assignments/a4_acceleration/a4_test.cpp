@@ -295,23 +295,28 @@ bool allImplemented(const Geometry& g) {
   return bvhImplemented(g) && taskImplemented(g, "kdtree", "A4.3") && taskImplemented(g, "octree", "A4.4");
 }
 
-// Checks rays [half * 50k, half * 50k + 50k) of the scene's 100k: two test
-// cases per scene, so that a parallel ctest spreads the brute-force work.
-void checkScene(const std::string& file, int half) {
+// Checks quarter `part` (0-3) of the scene's 100k rays: four test cases per
+// scene, so that a parallel ctest spreads the brute-force work and each case
+// stays well under 10 s.
+void checkScene(const std::string& file, int part) {
   const Scene scene = loadScene(std::string(LIGHTLAB_DATA_DIR) + "/scenes/" + file);
-  // With a stub the BVH is brute force: still checked, on fewer rays to stay quick.
-  const size_t total = allImplemented(scene.geometry) ? 100000 : 4000;  // halves: multiples of 8 (see grazing())
+  // With a stub an accelerator is brute force: still checked, on fewer rays to stay quick.
+  const size_t total = allImplemented(scene.geometry) ? 100000 : 4000;  // quarters: multiples of 8 (see grazing())
   const std::vector<Ray> all = makeRays(scene.geometry, total, 4242);
-  const auto begin = all.begin() + static_cast<std::ptrdiff_t>(half * total / 2);
-  const std::vector<Ray> rays(begin, begin + static_cast<std::ptrdiff_t>(total / 2));
+  const auto begin = all.begin() + static_cast<std::ptrdiff_t>(static_cast<size_t>(part) * total / 4);
+  const std::vector<Ray> rays(begin, begin + static_cast<std::ptrdiff_t>(total / 4));
   const Reference ref = bruteForce(scene.geometry, rays);
   expectMatchesBruteForce(scene.geometry, rays, rays.size(), ref, allConfigs());
 }
 
-TEST(A4_Accelerators, MatchBruteForceOnTheBunnyFirst50k) { checkScene("bunny.json", 0); }
-TEST(A4_Accelerators, MatchBruteForceOnTheBunnySecond50k) { checkScene("bunny.json", 1); }
-TEST(A4_Accelerators, MatchBruteForceOnTheCornellBunnyFirst50k) { checkScene("cornell_bunny.json", 0); }
-TEST(A4_Accelerators, MatchBruteForceOnTheCornellBunnySecond50k) { checkScene("cornell_bunny.json", 1); }
+TEST(A4_Accelerators, MatchBruteForceOnTheBunnyQuarter1) { checkScene("bunny.json", 0); }
+TEST(A4_Accelerators, MatchBruteForceOnTheBunnyQuarter2) { checkScene("bunny.json", 1); }
+TEST(A4_Accelerators, MatchBruteForceOnTheBunnyQuarter3) { checkScene("bunny.json", 2); }
+TEST(A4_Accelerators, MatchBruteForceOnTheBunnyQuarter4) { checkScene("bunny.json", 3); }
+TEST(A4_Accelerators, MatchBruteForceOnTheCornellBunnyQuarter1) { checkScene("cornell_bunny.json", 0); }
+TEST(A4_Accelerators, MatchBruteForceOnTheCornellBunnyQuarter2) { checkScene("cornell_bunny.json", 1); }
+TEST(A4_Accelerators, MatchBruteForceOnTheCornellBunnyQuarter3) { checkScene("cornell_bunny.json", 2); }
+TEST(A4_Accelerators, MatchBruteForceOnTheCornellBunnyQuarter4) { checkScene("cornell_bunny.json", 3); }
 
 // --- Hard cases, made by hand -----------------------------------------------------
 

@@ -70,14 +70,19 @@ class Builder {
   Builder(KdTree& tree, const KdSettings& s, int maxDepth, float pad)
       : tree_(tree), s_(s), maxDepth_(maxDepth), pad_(pad) {}
 
-  // Appends the subtree of the cell `cell` holding `prims` (consumed) at the end of tree_.nodes.
-  void build(std::vector<KdPrim>& prims, const Bounds3& cell, int depth, int badRefines) {
+  // Appends the subtree of the cell `cell` holding `prims` (consumed) at the
+  // end of tree_.nodes. depth: edges from the root; splits: of those, the
+  // ones that left primitives on both sides (cutting off empty space does
+  // not count against maxDepth, or a small object in a big scene would run
+  // out of depth before its primitives are separated).
+  void build(std::vector<KdPrim>& prims, const Bounds3& cell, int depth, int splits, int badRefines) {
     const auto index = static_cast<uint32_t>(tree_.nodes.size());
     tree_.nodes.emplace_back();
     depth_ = std::max(depth_, depth);
     const size_t n = prims.size();
     const double area = halfArea(cell);
-    if (n <= static_cast<size_t>(s_.maxLeaf) || depth >= maxDepth_) return makeLeaf(index, prims, area);
+    if (n <= static_cast<size_t>(s_.maxLeaf) || splits >= maxDepth_ || depth >= kKdMaxDepth)
+      return makeLeaf(index, prims, area);
     const Plane plane = bestPlane(prims, cell);
     const float leafCost = s_.intersectionCost * static_cast<float>(n);
     if (plane.axis < 0) return makeLeaf(index, prims, area);
@@ -117,9 +122,10 @@ class Builder {
     }
     std::vector<KdPrim>().swap(prims);  // free before recursing
     sah_ += static_cast<double>(s_.traversalCost) * area;
-    build(below, cellBelow, depth + 1, badRefines);
+    const int nextSplits = splits + (below.empty() || above.empty() ? 0 : 1);
+    build(below, cellBelow, depth + 1, nextSplits, badRefines);
     tree_.nodes[index] = KdNode::interior(a, split, static_cast<uint32_t>(tree_.nodes.size()));
-    build(above, cellAbove, depth + 1, badRefines);
+    build(above, cellAbove, depth + 1, nextSplits, badRefines);
   }
 
   int depth() const { return depth_; }
@@ -235,7 +241,7 @@ KdTree buildKdTree(const Geometry& geometry, const KdSettings& settings, KdBuild
     const Vec3 far = glm::max(glm::abs(tree.bounds.min), glm::abs(tree.bounds.max));
     const float pad = 1e-5f * (std::max({far.x, far.y, far.z}) + tree.bounds.diagonal());
     Builder builder(tree, settings, maxDepth, pad);
-    builder.build(prims, tree.bounds, 0, 0);
+    builder.build(prims, tree.bounds, 0, 0, 0);
     depth = builder.depth();
     const double rootArea = halfArea(tree.bounds);
     sah = rootArea > 0.0 ? builder.sahSum() / rootArea : static_cast<double>(settings.intersectionCost) * n;

@@ -17,7 +17,7 @@
 namespace ll::a4 {
 
 struct KdSettings {
-  int maxDepth = 0;               // deepest leaf (edges from the root); 0 = 8 + 1.3 log2(n), PBRT's rule
+  int maxDepth = 0;  // most splits above a leaf, not counting empty-space cuts; 0 = 8 + 1.3 log2(n), PBRT's rule
   int maxLeaf = 2;                // nodes with at most this many primitives become leaves
   float traversalCost = 1.0f;     // SAH: cost of one traversal step ...
   float intersectionCost = 1.5f;  // ... relative to one primitive test
@@ -25,7 +25,8 @@ struct KdSettings {
   int bins = 32;                  // candidate planes per axis: bins - 1 bin boundaries
 };
 
-// Deepest tree the build makes; traversal stacks hold this many entries.
+// Deepest tree the build makes (empty-space cuts included); traversal stacks
+// hold this many entries.
 constexpr int kKdMaxDepth = 64;
 constexpr int kKdStackSize = kKdMaxDepth;
 

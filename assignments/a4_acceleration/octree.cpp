@@ -1,7 +1,7 @@
 // Building the octree (framework code): the root is a cube around the scene;
 // a cell with more than maxLeaf primitives (and above maxDepth) is cut into
-// eight, and each primitive goes to every child its box touches. Statistics
-// on the way.
+// eight, and each primitive goes to every child its box touches -- unless
+// that separates nothing. Statistics on the way.
 #include "octree.h"
 
 #include <algorithm>
@@ -34,15 +34,24 @@ class Builder {
     if (n > static_cast<size_t>(s_.maxLeaf) && depth < s_.maxDepth) {
       std::array<std::vector<uint32_t>, 8> children;
       std::array<Vec3, 8> childLo, childHi;
-      bool progress = false;
+      size_t separated = 0, nonEmpty = 0, references = 0;
       for (int i = 0; i < 8; ++i) {
         const auto ci = static_cast<size_t>(i);
         octreeChildCell(lo, hi, i, childLo[ci], childHi[ci]);
         for (uint32_t p : prims)
           if (overlaps(boxes_[p], childLo[ci], childHi[ci])) children[ci].push_back(p);
-        progress = progress || children[ci].size() < n;
+        const size_t m = children[ci].size();
+        nonEmpty += m > 0 ? 1 : 0;
+        separated += (m > 0 && m < n) ? 1 : 0;
+        references += m;
       }
-      if (progress) {  // else every child would hold everything: stay a leaf
+      // Worth it if some child holds only part of the primitives, or one child
+      // holds them all (the cell shrinks around them); not if the non-empty
+      // children all hold everything (identical or mutually overlapping
+      // primitives), nor if most primitives are bigger than the children
+      // (over 4 references each on average: splitting would only copy them).
+      const bool progress = (separated > 0 || nonEmpty == 1) && references <= 4 * n;
+      if (progress) {
         std::vector<uint32_t>().swap(prims);
         const auto first = static_cast<uint32_t>(tree_.nodes.size());
         tree_.nodes.resize(tree_.nodes.size() + 8);

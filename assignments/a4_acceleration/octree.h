@@ -15,8 +15,8 @@
 namespace ll::a4 {
 
 struct OctreeSettings {
-  int maxDepth = 8;  // deepest leaf (edges from the root), <= kOctreeMaxDepth
-  int maxLeaf = 4;   // cells with at most this many primitives are not subdivided
+  int maxDepth = 14;  // deepest leaf (edges from the root), <= kOctreeMaxDepth
+  int maxLeaf = 8;    // cells with at most this many primitives are not subdivided
 };
 
 constexpr int kOctreeMaxDepth = 16;

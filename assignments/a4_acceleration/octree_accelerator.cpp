@@ -84,8 +84,8 @@ AcceleratorInfo octreeAccelerator() {
   return {"octree",
           "octree (assignment 4): cells cut at their centre into eight, primitives in every cell they touch, "
           "children visited in the order the ray enters them",
-          {ParamDecl::integer("max_depth", 8, 0, a4::kOctreeMaxDepth, "deepest leaf (the root is depth 0)"),
-           ParamDecl::integer("max_leaf", 4, 1, 64, "cells with at most this many primitives are not subdivided")},
+          {ParamDecl::integer("max_depth", 14, 0, a4::kOctreeMaxDepth, "deepest leaf (the root is depth 0)"),
+           ParamDecl::integer("max_leaf", 8, 1, 64, "cells with at most this many primitives are not subdivided")},
           [](const ParamSet& p) -> std::unique_ptr<Accelerator> {
             a4::OctreeSettings s;
             s.maxDepth = p.getInt("max_depth");

@@ -45,12 +45,14 @@ bool traverseOctree(const Octree& tree, const TraversalRay& r, Hit& hit, QueryCo
         nearOf[a][1] = neg ? th : tc;
         farOf[a][1] = neg ? tc : th;
       }
-      // The children the ray enters before the closest hit, sorted by entry.
+      // The non-empty children the ray enters before the closest hit, sorted by entry.
       const float tLimit = r.cullLimit(hit.t);
       int order[8];
       float entry[8];
       int count = 0;
       for (int i = 0; i < 8; ++i) {
+        const OctreeNode& child = nodes[node.offset + static_cast<uint32_t>(i)];
+        if (child.count == 0) continue;  // an empty leaf: nothing to find there
         float tn = r.ray.tmin, tf = tLimit;
         for (int a = 0; a < 3; ++a) {
           const int half = (i >> a) & 1;

@@ -1,9 +1,9 @@
 // Accelerator benchmarks: closest-hit and any-hit throughput (Mrays/s, one
 // thread unless the name says t2) for coherent (camera) and incoherent
 // (random origin in the scene's box, random direction) rays, and build time,
-// for every BVH split method and Embree in the same run, on the bunny
-// (3.7k, 59k, 235k triangles), the Cornell box with the 59k bunny and a
-// soup of 1M random triangles.
+// for every BVH split method, the KD-tree, the octree and Embree in the same
+// run, on the bunny (3.7k, 59k, 235k triangles), the Cornell box with the 59k
+// bunny and a soup of 1M random triangles.
 //
 //   build-dir/tests/bench/lightlab_bench --benchmark_filter=Accel
 //     --benchmark_repetitions=5 --benchmark_enable_random_interleaving=true
@@ -78,7 +78,9 @@ const std::vector<BenchAccel>& benchAccels() {
     std::vector<BenchAccel> a = {{"bvh-sah", "bvh", {"split=sah"}},
                                  {"bvh-median", "bvh", {"split=median"}},
                                  {"bvh-equal", "bvh", {"split=equal-counts"}},
-                                 {"bvh-sah-sphere", "bvh", {"split=sah", "volume=sphere"}}};
+                                 {"bvh-sah-sphere", "bvh", {"split=sah", "volume=sphere"}},
+                                 {"kdtree", "kdtree", {}},
+                                 {"octree", "octree", {}}};
     for (const AcceleratorInfo& info : accelerators())
       if (info.name == "embree") {
         a.push_back({"embree", "embree", {"robust=false"}});  // Embree's own defaults: the yardstick
