@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -191,6 +192,32 @@ TEST(RenderJob, StubMarksThePixelsThatUsedIt) {
   EXPECT_EQ(job.frame().resolve(false).pixels(), std::vector<Rgb>(32 * 32, Rgb(0.5f)));
   // The thread-local stub flag does not leak out of the render.
   EXPECT_FALSE(takeStubFlag());
+}
+
+// The GUI runs a preview job and then the full job in the same stack slot:
+// the second log lives at the first one's address and must still hear every
+// stub (a per-thread cache keyed by address once hid them).
+TEST(TaskLog, ALogAtAFreedLogsAddressStillHearsEveryStub) {
+  std::optional<TaskLog> log;
+  const void* firstAddress = nullptr;
+  for (int round = 0; round < 3; ++round) {
+    log.emplace();
+    if (round == 0) firstAddress = &*log;
+    ASSERT_EQ(static_cast<const void*>(&*log), firstAddress);
+    {
+      const ScopedTaskLog scope(&*log);
+      LIGHTLAB_TODO("T.2", "a stub called twice");
+      LIGHTLAB_TODO("T.2", "a stub called twice");
+    }
+    EXPECT_EQ(log->missing().size(), 1u) << "round " << round;
+    log->clear();
+    {
+      const ScopedTaskLog scope(&*log);
+      LIGHTLAB_TODO("T.2", "a stub called twice");
+    }
+    EXPECT_EQ(log->missing().size(), 1u) << "after clear, round " << round;
+  }
+  takeStubFlag();
 }
 
 TEST(RenderJob, CancelFromAnotherThreadAfterTheFirstPass) {

@@ -8,7 +8,11 @@ namespace ll {
 namespace {
 thread_local TaskLog* tCurrentLog = nullptr;
 thread_local bool tStubUsed = false;
+std::atomic<uint64_t> gNextSerial{1};
+uint64_t nextSerial() { return gNextSerial.fetch_add(1, std::memory_order_relaxed); }
 }  // namespace
+
+TaskLog::TaskLog() : serial_(nextSerial()) {}
 
 void TaskLog::report(const std::string& id, const std::string& what, bool exact) {
   std::lock_guard lock(mutex_);
@@ -33,6 +37,7 @@ void TaskLog::clear() {
   std::lock_guard lock(mutex_);
   missing_.clear();
   striping_.clear();
+  serial_.store(nextSerial(), std::memory_order_release);
 }
 
 ScopedTaskLog::ScopedTaskLog(TaskLog* log) : previous_(tCurrentLog) { tCurrentLog = log; }
@@ -41,13 +46,15 @@ ScopedTaskLog::~ScopedTaskLog() { tCurrentLog = previous_; }
 void reportMissingTask(const char* id, const char* what, bool marksPixels) {
   if (marksPixels) tStubUsed = true;
   if (!tCurrentLog) return;
-  // Stubs may run once per ray: remember (log, id) pairs this thread already
-  // reported, so the common case takes no lock. Ids are few per render.
-  thread_local std::vector<std::pair<const TaskLog*, std::string>> reported;
-  for (const auto& [log, known] : reported)
-    if (log == tCurrentLog && known == id) return;
+  // Stubs may run once per ray: remember (log serial, id) pairs this thread
+  // already reported, so the common case takes no lock. Serials, not
+  // addresses: a job's log often reuses the previous job's address.
+  thread_local std::vector<std::pair<uint64_t, std::string>> reported;
+  const uint64_t serial = tCurrentLog->serial();
+  for (const auto& [known, knownId] : reported)
+    if (known == serial && knownId == id) return;
   if (reported.size() > 64) reported.clear();
-  reported.emplace_back(tCurrentLog, id);
+  reported.emplace_back(serial, id);
   tCurrentLog->report(id, what, !marksPixels);
 }
 

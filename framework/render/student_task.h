@@ -6,6 +6,8 @@
 // whose fallback is exact use LIGHTLAB_TODO_EXACT (reported, not striped).
 #pragma once
 
+#include <atomic>
+#include <cstdint>
 #include <map>
 #include <mutex>
 #include <set>
@@ -16,13 +18,18 @@ namespace ll {
 // Missing tasks seen during one render (thread-safe).
 class TaskLog {
  public:
+  TaskLog();
   // exact: the stub's fallback gives the same result (only slower), no pixel is striped.
   void report(const std::string& id, const std::string& what, bool exact = false);
   std::map<std::string, std::string> missing() const;  // id -> description
   std::set<std::string> exact() const;                 // the missing ids whose fallback is exact
   void clear();
+  // Unique for this log's contents: a new log (even at a freed log's address)
+  // and clear() get a fresh serial, so per-thread report caches never go stale.
+  uint64_t serial() const { return serial_.load(std::memory_order_acquire); }
 
  private:
+  std::atomic<uint64_t> serial_;
   mutable std::mutex mutex_;
   std::map<std::string, std::string> missing_;
   std::set<std::string> striping_;  // ids reported at least once by a pixel-striping stub
