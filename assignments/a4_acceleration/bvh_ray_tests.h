@@ -43,7 +43,11 @@ struct TraversalRay {
 // 2(2), 2013: 1 + 2 gamma(3)).
 constexpr float kBvhRobustScale = 1.0f + 2.0f * 3.0f * (std::numeric_limits<float>::epsilon() * 0.5f);
 
-// Whether the ray meets the box [lo, hi] somewhere in [ray.tmin, tLimit];
+// Whether the ray meets the box [lo, hi] somewhere in [ray.tmin, tLimit],
+// up to rounding: the relative slack covers the slab arithmetic, the absolute
+// r.tSlack the plane differences (lo - origin), whose rounding grows with the
+// scene's size, not with t -- a flat box (a wall) hit at t ~ 1e-5 by a shadow
+// ray leaving the wall is otherwise culled;
 // tEntry is where it enters (>= ray.tmin). Axis-parallel rays are exact: a
 // zero direction component gives +-infinity, and the NaN of an origin lying
 // on a slab plane (0 * infinity) leaves the interval unchanged -- the closed
@@ -61,7 +65,7 @@ inline bool rayEntersBox(const TraversalRay& r, const Vec3& lo, const Vec3& hi, 
   tf = fy < tf ? fy : tf;
   tf = fz < tf ? fz : tf;
   tEntry = tn;
-  return tn <= tf * kBvhRobustScale;
+  return tn <= tf * kBvhRobustScale + r.tSlack;
 }
 
 // Whether the ray meets the sphere (centre, radius) in [ray.tmin, tLimit];
@@ -81,7 +85,7 @@ inline bool rayEntersSphere(const TraversalRay& r, const Vec3& centre, float rad
   const float tn = std::max(tc - half, r.ray.tmin);
   const float tf = std::min(tc + half, tLimit);
   tEntry = tn;
-  return tn <= tf * kBvhRobustScale;
+  return tn <= tf * kBvhRobustScale + r.tSlack;
 }
 
 // The next float above t (t finite or infinite, not NaN).
