@@ -25,6 +25,7 @@
 #include "core/error.h"
 #include "gpu/gl_program.h"
 #include "gpu/offscreen_gl.h"
+#include "render/raster_scene.h"
 #include "render/technique.h"
 
 namespace ll {
@@ -119,84 +120,9 @@ void main() {
 }
 )";
 
-struct Vertex {
-  Vec3 position, normal;
-  Vec2 uv;
-};
-
-// Triangles of every object (spheres tessellated), non-indexed, object by object.
-struct Mesh {
-  std::vector<Vertex> vertices;
-  std::vector<std::pair<int, int>> ranges;  // per object: first vertex, count
-};
-
-void addSphere(std::vector<Vertex>& out, const Sphere& s, int segments) {
-  const int rings = std::max(segments / 2, 4);
-  const auto vertex = [&](int i, int j) {
-    const float theta =
-        kPi * static_cast<float>(j) / static_cast<float>(rings) - kPi / 2;  // latitude
-    const float phi = 2.0f * kPi * static_cast<float>(i) / static_cast<float>(segments);
-    const Vec3 n(std::cos(theta) * std::cos(phi), std::sin(theta), std::cos(theta) * std::sin(phi));
-    return Vertex{s.center + s.radius * n, n,
-                  Vec2(static_cast<float>(i) / static_cast<float>(segments),
-                       static_cast<float>(j) / static_cast<float>(rings))};
-  };
-  for (int j = 0; j < rings; ++j)
-    for (int i = 0; i < segments; ++i) {
-      const Vertex a = vertex(i, j), b = vertex(i + 1, j), c = vertex(i + 1, j + 1),
-                   d = vertex(i, j + 1);
-      out.insert(out.end(), {a, c, b, a, d, c});
-    }
-}
-
-Mesh buildMesh(const Scene& scene, int sphereSegments) {
-  const Geometry& g = scene.geometry;
-  Mesh mesh;
-  for (const SceneObject& object : scene.objects) {
-    const int first = static_cast<int>(mesh.vertices.size());
-    for (uint32_t prim = object.firstPrim; prim < object.firstPrim + object.primCount; ++prim) {
-      if (!g.isTriangle(prim)) {
-        addSphere(mesh.vertices, g.spheres[prim - g.triangleCount()], sphereSegments);
-        continue;
-      }
-      const glm::uvec3& t = g.triangles[prim];
-      const Vec3 face = glm::normalize(
-          glm::cross(g.positions[t.y] - g.positions[t.x], g.positions[t.z] - g.positions[t.x]));
-      for (uint32_t k : {t.x, t.y, t.z})
-        mesh.vertices.push_back({g.positions[k], g.normals.empty() ? face : g.normals[k],
-                                 g.uvs.empty() ? Vec2(0.0f) : g.uvs[k]});
-    }
-    mesh.ranges.emplace_back(first, static_cast<int>(mesh.vertices.size()) - first);
-  }
-  return mesh;
-}
-
-struct GlLight {
-  glm::vec4 position;
-  Vec3 normal{0.0f};
-  Rgb intensity{0.0f};
-};
-
-std::vector<GlLight> lightsOf(const Scene& scene, int areaSamples) {
-  std::vector<GlLight> lights;
-  for (const Light& l : scene.lights) {
-    if (l.type == Light::Type::Point)
-      lights.push_back({glm::vec4(l.position, 1.0f), Vec3(0.0f), l.intensity});
-    else
-      lights.push_back({glm::vec4(-glm::normalize(l.direction), 0.0f), Vec3(0.0f), l.intensity});
-  }
-  // Area lights: the centres of an n x n grid over the light's sample square.
-  const int n =
-      std::max(1, static_cast<int>(std::lround(std::sqrt(static_cast<double>(areaSamples)))));
-  for (const AreaLight& a : scene.areaLights)
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i) {
-        const LightPoint p =
-            scene.sampleAreaLight(a, Vec2((static_cast<float>(i) + 0.5f) / static_cast<float>(n),
-                                          (static_cast<float>(j) + 0.5f) / static_cast<float>(n)));
-        lights.push_back({glm::vec4(p.position, 2.0f), p.normal,
-                          a.emission * (a.area / static_cast<float>(n * n))});
-      }
+// The scene's lights as the shader's point-like lights (area lights as n x n grids).
+std::vector<RasterLight> lightsOf(const Scene& scene, int areaSamples) {
+  std::vector<RasterLight> lights = rasterLights(scene, areaSamples);
   if (lights.size() > static_cast<size_t>(kMaxLights))
     throwUserError("blinn-phong-gl: the scene needs " + std::to_string(lights.size()) +
                    " point lights (at most " + std::to_string(kMaxLights) +
@@ -216,8 +142,8 @@ class BlinnPhongGl final : public Technique {
     const int scale = p.getChoice("samples") == "16" ? 4 : p.getChoice("samples") == "4" ? 2 : 1;
     const Camera camera = renderCamera(ctx.scene, ctx.settings);
     const int w = camera.width * scale, h = camera.height * scale;
-    const Mesh mesh = buildMesh(ctx.scene, p.getInt("sphere_segments"));
-    const std::vector<GlLight> lights = lightsOf(ctx.scene, p.getInt("light_samples"));
+    const RasterMesh mesh = buildRasterMesh(ctx.scene, p.getInt("sphere_segments"));
+    const std::vector<RasterLight> lights = lightsOf(ctx.scene, p.getInt("light_samples"));
     if (cancel) return;
 
     const gpu::OffscreenGl::Lease lease;
@@ -241,17 +167,17 @@ class BlinnPhongGl final : public Technique {
     glBindVertexArray(vao);
     glGenBuffers(1, &vbo);
     glBindBuffer(GL_ARRAY_BUFFER, vbo);
-    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh.vertices.size() * sizeof(Vertex)),
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh.vertices.size() * sizeof(RasterVertex)),
                  mesh.vertices.data(), GL_STATIC_DRAW);
     glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex),
-                          reinterpret_cast<void*>(offsetof(Vertex, position)));
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(RasterVertex),
+                          reinterpret_cast<void*>(offsetof(RasterVertex, position)));
     glEnableVertexAttribArray(1);
-    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex),
-                          reinterpret_cast<void*>(offsetof(Vertex, normal)));
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(RasterVertex),
+                          reinterpret_cast<void*>(offsetof(RasterVertex, normal)));
     glEnableVertexAttribArray(2);
-    glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, sizeof(Vertex),
-                          reinterpret_cast<void*>(offsetof(Vertex, uv)));
+    glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, sizeof(RasterVertex),
+                          reinterpret_cast<void*>(offsetof(RasterVertex, uv)));
 
     // Camera: the scene's pinhole; depth range from the scene's bounds.
     const Bounds3 bounds = ctx.scene.geometry.sceneBounds();
@@ -275,8 +201,8 @@ class BlinnPhongGl final : public Technique {
     glUniform1i(program.uniform("uLightCount"), static_cast<GLint>(lights.size()));
     for (size_t i = 0; i < lights.size(); ++i) {
       const std::string idx = "[" + std::to_string(i) + "]";
-      glUniform4fv(program.uniform(("uLightPosition" + idx).c_str()), 1,
-                   glm::value_ptr(lights[i].position));
+      const glm::vec4 position(lights[i].position, static_cast<float>(lights[i].kind));  // w: the kind
+      glUniform4fv(program.uniform(("uLightPosition" + idx).c_str()), 1, glm::value_ptr(position));
       glUniform3fv(program.uniform(("uLightNormal" + idx).c_str()), 1,
                    glm::value_ptr(lights[i].normal));
       glUniform3fv(program.uniform(("uLightIntensity" + idx).c_str()), 1,
@@ -370,9 +296,9 @@ TechniqueInfo blinnPhongGlTechnique() {
           EffectSet{Effect::DirectLighting, Effect::GlossyHighlights, Effect::Textures,
                     Effect::Emission},
           0,
-          {ParamDecl::choice("shading", "phong", {"flat", "phong"},
-                             "flat: one normal per triangle (from screen derivatives); phong: "
-                             "interpolated normals, lit per pixel"),
+          {ParamDecl::choice("shading", "phong", {"flat", "gouraud", "phong"},
+                             "flat: one normal per triangle (from screen derivatives); gouraud: lit per "
+                             "vertex and interpolated; phong: interpolated normals, lit per pixel"),
            ParamDecl::choice("samples", "1", {"1", "4", "16"},
                              "supersamples per pixel (ordered grid 1x1, 2x2, 4x4)"),
            ParamDecl::choice("filter", "trilinear", {"nearest", "bilinear", "trilinear"},

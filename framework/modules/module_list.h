@@ -23,5 +23,6 @@
   LIGHTLAB_EMBREE_ACCELERATOR(X)
 
 #define LIGHTLAB_TECHNIQUES(X) \
+  X(blinnPhongTechnique)       \
   X(raycastTechnique)          \
   LIGHTLAB_GPU_TECHNIQUES(X)

@@ -25,7 +25,7 @@ lightlab_error_test(unknown_material "unknown_material\\.json:[0-9]+:[0-9]+: unk
                     render ${SCENES}/tests/bad/unknown_material.json -o ${OUT}/unknown_material.png)
 lightlab_error_test(missing_mesh "missing_mesh\\.json:[0-9]+:[0-9]+: mesh file not found: /.*does_not_exist\\.ply"
                     render ${SCENES}/tests/bad/missing_mesh.json -o ${OUT}/missing_mesh.png)
-lightlab_error_test(unknown_technique "unknown technique 'phong' \\(known: raycast"
+lightlab_error_test(unknown_technique "unknown technique 'phong' \\(known: blinn-phong, raycast"
                     render ${SCENES}/cornell_box.json -t phong -o ${OUT}/unknown_technique.png)
 lightlab_error_test(unknown_accelerator "unknown accelerator 'kd' \\(known: none"
                     render ${SCENES}/cornell_box.json -a kd -o ${OUT}/unknown_accelerator.png)

@@ -1,0 +1,31 @@
+// A1.2 Edge functions and the top-left fill rule.
+#include "a1_tasks.h"
+#include "rasterizer.h"
+#include "render/student_task.h"
+
+namespace ll::a1 {
+
+double edgeFunction(Vec2 a, Vec2 b, Vec2 p) {
+#if LIGHTLAB_SOLUTION  // A1.2
+  const double ax = a.x, ay = a.y;  // float -> double is exact, and so is every step below
+  const double bx = static_cast<double>(b.x) - ax, by = static_cast<double>(b.y) - ay;
+  const double px = static_cast<double>(p.x) - ax, py = static_cast<double>(p.y) - ay;
+  return bx * py - by * px;
+#else
+  LIGHTLAB_TODO("A1.2", "edge functions and the top-left fill rule (assignments/a1_rasterizer/edge_function.cpp)");
+  return referenceEdgeFunction(a, b, p);  // framework fallback
+#endif
+}
+
+bool isTopLeft(Vec2 a, Vec2 b) {
+#if LIGHTLAB_SOLUTION  // A1.2
+  const Vec2 d = b - a;
+  // With y down and positive area, top edges run to the right, left edges run upwards.
+  return (d.y == 0.0f && d.x > 0.0f) || d.y < 0.0f;
+#else
+  LIGHTLAB_TODO("A1.2", "edge functions and the top-left fill rule (assignments/a1_rasterizer/edge_function.cpp)");
+  return referenceIsTopLeft(a, b);  // framework fallback
+#endif
+}
+
+}  // namespace ll::a1

@@ -1,0 +1,47 @@
+// The fixed-function part of the pipeline (framework code): vertex stage,
+// homogeneous near-plane clipping, viewport transform, triangle setup with
+// edge functions and the top-left fill rule (A1.2), perspective-correct
+// interpolation, z-buffer (A1.3), fragment stage and supersampling with a box
+// filter. Triangles are binned to 16x16-pixel tiles; tiles run in parallel
+// (oneTBB), each owning its pixels and drawing its triangles in submission
+// order, so the image does not depend on the thread count.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "core/math.h"
+#include "render/frame_buffer.h"
+#include "render/student_task.h"
+#include "shader.h"
+
+namespace ll::a1 {
+
+struct DrawCall {
+  int firstVertex = 0, vertexCount = 0;  // non-indexed triangles: 3 vertices each
+  int object = 0;
+};
+
+struct RasterSettings {
+  int width = 0, height = 0;  // pixels of fb
+  int scale = 1;              // scale x scale ordered supersamples per pixel, box-filtered
+  Rgb background{0.0f};
+  TaskLog* taskLog = nullptr;  // installed on every worker (student stubs report here)
+};
+
+// Adds one sample per pixel of fb (the box-filtered supersamples); pixels
+// whose computation went through a student stub are marked. Returns early
+// (leaving pixels unwritten) when `cancel` becomes true. Returns the number
+// of non-finite fragment colours, which were drawn as 0.
+uint64_t rasterize(const Shader& shader, const std::vector<DrawCall>& draws, const RasterSettings& settings,
+                   FrameBuffer& fb, const std::atomic<bool>& cancel);
+
+// The framework's edge function, fill rule and depth test: the fallbacks of
+// the A1.2 and A1.3 stubs (the picture stays right; the pixels are striped).
+double referenceEdgeFunction(Vec2 a, Vec2 b, Vec2 p);
+bool referenceIsTopLeft(Vec2 a, Vec2 b);
+bool referenceDepthTest(float z, float& stored);
+
+}  // namespace ll::a1
