@@ -165,7 +165,7 @@ class BlinnPhongRaster final : public Technique {
     std::vector<a1::DrawCall> draws;
     for (size_t o = 0; o < mesh_.ranges.size(); ++o)
       draws.push_back({mesh_.ranges[o].first, mesh_.ranges[o].second, static_cast<int>(o)});
-    counters.nonFinite += a1::rasterize(shader, draws, settings, fb, cancel);
+    counters.nonFinite += a1::rasterize(workspace_, shader, draws, settings, fb, cancel);
   }
 
  private:
@@ -173,6 +173,7 @@ class BlinnPhongRaster final : public Technique {
   std::vector<RasterLight> lights_;
   std::vector<uint32_t> objectMaterial_;
   std::vector<a1::MipChain> mips_;  // per material; empty unless it has an image texture
+  a1::RasterWorkspace workspace_;   // frame-to-frame buffers
 };
 
 }  // namespace

@@ -35,15 +35,6 @@ Varyings blend(const Varyings& a, const Varyings& b, const Varyings& c, float b0
   return v;
 }
 
-namespace {
-
-constexpr int kTile = 16;  // pixels per tile side
-
-struct ClipVertex {
-  Vec4 clip;
-  Varyings v;
-};
-
 // A triangle after clipping and the viewport transform, ready to scan.
 struct ScreenTriangle {
   Vec2 p[3];       // sample-grid coordinates (x right, y down; sample (i, j) centred at (i + 0.5, j + 0.5))
@@ -55,6 +46,20 @@ struct ScreenTriangle {
   Vec3 faceNormal;
   int object;
   int x0, y0, x1, y1;  // sample bounding box, inclusive
+};
+
+RasterWorkspace::RasterWorkspace() = default;
+RasterWorkspace::~RasterWorkspace() = default;
+
+namespace {
+
+constexpr int kTile = 16;              // pixels per tile side
+constexpr int kChunkTriangles = 2048;  // input triangles per setup task
+constexpr uint32_t kChunkShift = 12;   // a chunk yields <= 2 * kChunkTriangles <= 2^12 screen triangles
+
+struct ClipVertex {
+  Vec4 clip;
+  Varyings v;
 };
 
 // Sutherland-Hodgman against the near plane z_clip >= -w_clip: 3 vertices in,
@@ -80,10 +85,11 @@ int clipNear(const ClipVertex (&in)[3], ClipVertex (&out)[4]) {
   return n;
 }
 
-// Appends the screen triangles of one draw call, in order.
-void setup(const Shader& shader, const DrawCall& draw, const RasterSettings& s, std::vector<ScreenTriangle>& out) {
+// Appends the screen triangles of triangles [first, last) of one draw call, in order.
+void setup(const Shader& shader, const DrawCall& draw, int first, int last, const RasterSettings& s,
+           std::vector<ScreenTriangle>& out) {
   const float sw = static_cast<float>(s.width * s.scale), sh = static_cast<float>(s.height * s.scale);
-  for (int t = 0; t + 2 < draw.vertexCount; t += 3) {
+  for (int t = 3 * first; t < 3 * last; t += 3) {
     ClipVertex in[3];
     for (int k = 0; k < 3; ++k) in[k].clip = shader.vertex(draw.firstVertex + t + k, draw.object, in[k].v);
     const Vec3 face = glm::cross(in[1].v.position - in[0].v.position, in[2].v.position - in[0].v.position);
@@ -143,20 +149,35 @@ Vec2 uvAt(const ScreenTriangle& t, Vec3 b) {
   return pb.x * t.v[0].uv + pb.y * t.v[1].uv + pb.z * t.v[2].uv;
 }
 
-// Draws triangle `t` into the tile whose samples are [sx0, sx1) x [sy0, sy1).
-void scanTriangle(const Shader& shader, const ScreenTriangle& t, int sx0, int sy0, int sx1, int sy1,
-                  std::vector<Rgb>& color, std::vector<float>& depth, std::vector<uint8_t>& stub,
-                  uint64_t& nonFinite) {
-  const int tw = sx1 - sx0;
-  const int x0 = std::max(t.x0, sx0), x1 = std::min(t.x1, sx1 - 1);
-  const int y0 = std::max(t.y0, sy0), y1 = std::min(t.y1, sy1 - 1);
-  // Screen-space barycentrics are affine: one sample step adds a constant.
-  const Vec3 ddx = Vec3(t.p[1].y - t.p[2].y, t.p[2].y - t.p[0].y, t.p[0].y - t.p[1].y) / static_cast<float>(t.area);
-  const Vec3 ddy = Vec3(t.p[2].x - t.p[1].x, t.p[0].x - t.p[2].x, t.p[1].x - t.p[0].x) / static_cast<float>(t.area);
+// One tile's samples [sx0, sx1) x [sy0, sy1) of the supersampled grid.
+struct Tile {
+  int sx0, sy0, sx1, sy1;
+  int width() const { return sx1 - sx0; }
+  size_t index(int x, int y) const {
+    return static_cast<size_t>(y - sy0) * static_cast<size_t>(width()) + static_cast<size_t>(x - sx0);
+  }
+};
+
+// Per-sample state of a tile: the z-buffer and, per sample, the fragment that
+// survived it so far (its triangle and screen-space barycentrics).
+struct TileBuffers {
+  static constexpr uint32_t kNone = ~0u;
+  std::vector<float> depth;
+  std::vector<uint32_t> triangle;  // reference into the workspace, or kNone
+  std::vector<Vec3> barycentric;
+  std::vector<Rgb> color;
+  std::vector<uint8_t> stub;
+};
+
+// Visibility pass of triangle `t` (reference `ref`) over the tile: coverage
+// with the fill rule (A1.2), then the depth test (A1.3).
+void coverTriangle(const ScreenTriangle& t, uint32_t ref, const Tile& tile, TileBuffers& buf) {
+  const int x0 = std::max(t.x0, tile.sx0), x1 = std::min(t.x1, tile.sx1 - 1);
+  const int y0 = std::max(t.y0, tile.sy0), y1 = std::min(t.y1, tile.sy1 - 1);
   for (int y = y0; y <= y1; ++y)
     for (int x = x0; x <= x1; ++x) {
       const Vec2 p(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
-      const size_t i = static_cast<size_t>(y - sy0) * static_cast<size_t>(tw) + static_cast<size_t>(x - sx0);
+      const size_t i = tile.index(x, y);
       double e[3];
       bool inside = true;
       for (int k = 0; k < 3 && inside; ++k) {
@@ -167,71 +188,110 @@ void scanTriangle(const Shader& shader, const ScreenTriangle& t, int sx0, int sy
         const Vec3 b(static_cast<float>(e[0] / t.area), static_cast<float>(e[1] / t.area),
                      static_cast<float>(e[2] / t.area));
         const float z = b.x * t.z[0] + b.y * t.z[1] + b.z * t.z[2];
-        if (z >= 0.0f && depthTest(z, depth[i])) {
-          Fragment f;
-          const Vec3 pb = perspective(t, b);
-          f.in = blend(t.v[0], t.v[1], t.v[2], pb.x, pb.y, pb.z);
-          f.faceNormal = t.faceNormal;
-          f.object = t.object;
-          f.sample = glm::ivec2(x, y);
-          f.uvDx = uvAt(t, b + ddx) - f.in.uv;
-          f.uvDy = uvAt(t, b + ddy) - f.in.uv;
-          color[i] = shader.fragment(f);
-          if (!isFinite(color[i])) {  // never a NaN in a pixel: counted and zeroed
-            color[i] = Rgb(0.0f);
-            ++nonFinite;
-          }
+        if (z >= 0.0f && depthTest(z, buf.depth[i])) {
+          buf.triangle[i] = ref;
+          buf.barycentric[i] = b;
         }
       }
-      if (takeStubFlag()) stub[i] = 1;
+      if (takeStubFlag()) buf.stub[i] = 1;
     }
+}
+
+// Fragment stage of one sample whose surviving fragment lies on `t` at
+// screen-space barycentrics b.
+Rgb shadeSample(const Shader& shader, const ScreenTriangle& t, Vec3 b, int x, int y, uint64_t& nonFinite) {
+  // Screen-space barycentrics are affine: one sample step adds a constant.
+  const Vec3 ddx = Vec3(t.p[1].y - t.p[2].y, t.p[2].y - t.p[0].y, t.p[0].y - t.p[1].y) / static_cast<float>(t.area);
+  const Vec3 ddy = Vec3(t.p[2].x - t.p[1].x, t.p[0].x - t.p[2].x, t.p[1].x - t.p[0].x) / static_cast<float>(t.area);
+  Fragment f;
+  const Vec3 pb = perspective(t, b);
+  f.in = blend(t.v[0], t.v[1], t.v[2], pb.x, pb.y, pb.z);
+  f.faceNormal = t.faceNormal;
+  f.object = t.object;
+  f.sample = glm::ivec2(x, y);
+  f.uvDx = uvAt(t, b + ddx) - f.in.uv;
+  f.uvDy = uvAt(t, b + ddy) - f.in.uv;
+  const Rgb c = shader.fragment(f);
+  if (isFinite(c)) return c;
+  ++nonFinite;  // never a NaN in a pixel: counted and drawn as 0
+  return Rgb(0.0f);
 }
 
 }  // namespace
 
 uint64_t rasterize(const Shader& shader, const std::vector<DrawCall>& draws, const RasterSettings& s,
                    FrameBuffer& fb, const std::atomic<bool>& cancel) {
-  const ScopedTaskLog scopedLog(s.taskLog);
-  takeStubFlag();
-  std::vector<ScreenTriangle> tris;
-  for (const DrawCall& d : draws) setup(shader, d, s, tris);
-  const bool setupStub = takeStubFlag();  // a stub in the vertex stage or setup touches every pixel
+  RasterWorkspace workspace;
+  return rasterize(workspace, shader, draws, s, fb, cancel);
+}
+
+uint64_t rasterize(RasterWorkspace& ws, const Shader& shader, const std::vector<DrawCall>& draws,
+                   const RasterSettings& s, FrameBuffer& fb, const std::atomic<bool>& cancel) {
+  // Vertex stage and setup, in chunks of at most kChunkTriangles triangles of one draw call.
+  struct Chunk {
+    size_t draw;
+    int first, last;
+  };
+  std::vector<Chunk> chunks;
+  for (size_t d = 0; d < draws.size(); ++d)
+    for (int first = 0; first < draws[d].vertexCount / 3; first += kChunkTriangles)
+      chunks.push_back({d, first, std::min(first + kChunkTriangles, draws[d].vertexCount / 3)});
+  if (ws.chunks.size() < chunks.size()) ws.chunks.resize(chunks.size());
+  std::atomic<bool> setupStub{false};  // a stub in the vertex stage or setup touches every pixel
+  tbb::parallel_for(size_t{0}, chunks.size(), [&](size_t c) {
+    const ScopedTaskLog log(s.taskLog);
+    takeStubFlag();
+    ws.chunks[c].clear();
+    setup(shader, draws[chunks[c].draw], chunks[c].first, chunks[c].last, s, ws.chunks[c]);
+    if (takeStubFlag()) setupStub = true;
+  });
   if (cancel) return 0;
 
-  // Binning: each tile's triangles, in submission order.
+  // Binning: each tile's triangles, in submission order. A reference is
+  // (chunk << kChunkShift) | index within the chunk.
   const int scale = s.scale, tileSamples = kTile * scale;
   const int tilesX = (s.width + kTile - 1) / kTile, tilesY = (s.height + kTile - 1) / kTile;
-  std::vector<std::vector<uint32_t>> bins(static_cast<size_t>(tilesX) * static_cast<size_t>(tilesY));
-  for (size_t k = 0; k < tris.size(); ++k) {
-    const ScreenTriangle& t = tris[k];
-    for (int ty = t.y0 / tileSamples; ty <= t.y1 / tileSamples; ++ty)
-      for (int tx = t.x0 / tileSamples; tx <= t.x1 / tileSamples; ++tx)
-        bins[static_cast<size_t>(ty) * static_cast<size_t>(tilesX) + static_cast<size_t>(tx)].push_back(
-            static_cast<uint32_t>(k));
-  }
+  ws.bins.resize(static_cast<size_t>(tilesX) * static_cast<size_t>(tilesY));
+  for (auto& bin : ws.bins) bin.clear();
+  for (size_t c = 0; c < chunks.size(); ++c)
+    for (size_t k = 0; k < ws.chunks[c].size(); ++k) {
+      const ScreenTriangle& t = ws.chunks[c][k];
+      const auto ref = static_cast<uint32_t>((c << kChunkShift) | k);
+      for (int ty = t.y0 / tileSamples; ty <= t.y1 / tileSamples; ++ty)
+        for (int tx = t.x0 / tileSamples; tx <= t.x1 / tileSamples; ++tx)
+          ws.bins[static_cast<size_t>(ty) * static_cast<size_t>(tilesX) + static_cast<size_t>(tx)].push_back(ref);
+    }
+  const auto triangle = [&](uint32_t ref) -> const ScreenTriangle& {
+    return ws.chunks[ref >> kChunkShift][ref & ((1u << kChunkShift) - 1)];
+  };
 
   const float norm = 1.0f / static_cast<float>(scale * scale);
   std::atomic<uint64_t> nonFinite{0};
   tbb::parallel_for(tbb::blocked_range<int>(0, tilesX * tilesY), [&](const tbb::blocked_range<int>& range) {
     const ScopedTaskLog log(s.taskLog);
-    std::vector<Rgb> color;
-    std::vector<float> depth;
-    std::vector<uint8_t> stub;
+    TileBuffers buf;
     uint64_t localNonFinite = 0;
-    for (int tile = range.begin(); tile < range.end(); ++tile) {
+    for (int tileIndex = range.begin(); tileIndex < range.end(); ++tileIndex) {
       if (cancel.load(std::memory_order_relaxed)) break;
-      const int px0 = (tile % tilesX) * kTile, py0 = (tile / tilesX) * kTile;
+      const int px0 = (tileIndex % tilesX) * kTile, py0 = (tileIndex / tilesX) * kTile;
       const int px1 = std::min(px0 + kTile, s.width), py1 = std::min(py0 + kTile, s.height);
-      // The tile's samples: [sx0, sx1) x [sy0, sy1) of the sample grid.
-      const int sx0 = px0 * scale, sx1 = px1 * scale, sy0 = py0 * scale, sy1 = py1 * scale;
-      const int tw = sx1 - sx0;
-      const size_t count = static_cast<size_t>(tw) * static_cast<size_t>(sy1 - sy0);
-      color.assign(count, s.background);
-      depth.assign(count, 1.0f);  // the far plane
-      stub.assign(count, setupStub ? 1 : 0);
+      const Tile tile{px0 * scale, py0 * scale, px1 * scale, py1 * scale};
+      const size_t count = static_cast<size_t>(tile.width()) * static_cast<size_t>(tile.sy1 - tile.sy0);
+      buf.depth.assign(count, 1.0f);  // the far plane
+      buf.triangle.assign(count, TileBuffers::kNone);
+      buf.barycentric.resize(count);
+      buf.color.assign(count, s.background);
+      buf.stub.assign(count, setupStub ? 1 : 0);
       takeStubFlag();
-      for (const uint32_t k : bins[static_cast<size_t>(tile)])
-        scanTriangle(shader, tris[k], sx0, sy0, sx1, sy1, color, depth, stub, localNonFinite);
+      for (const uint32_t ref : ws.bins[static_cast<size_t>(tileIndex)]) coverTriangle(triangle(ref), ref, tile, buf);
+      // Shading pass: the fragment that won each sample, once.
+      for (int y = tile.sy0; y < tile.sy1; ++y)
+        for (int x = tile.sx0; x < tile.sx1; ++x) {
+          const size_t i = tile.index(x, y);
+          if (buf.triangle[i] == TileBuffers::kNone) continue;
+          buf.color[i] = shadeSample(shader, triangle(buf.triangle[i]), buf.barycentric[i], x, y, localNonFinite);
+          if (takeStubFlag()) buf.stub[i] = 1;
+        }
       // Box filter of each pixel's scale x scale samples.
       for (int y = py0; y < py1; ++y)
         for (int x = px0; x < px1; ++x) {
@@ -239,10 +299,9 @@ uint64_t rasterize(const Shader& shader, const std::vector<DrawCall>& draws, con
           bool marked = false;
           for (int sy = 0; sy < scale; ++sy)
             for (int sx = 0; sx < scale; ++sx) {
-              const size_t i = static_cast<size_t>((y - py0) * scale + sy) * static_cast<size_t>(tw) +
-                               static_cast<size_t>((x - px0) * scale + sx);
-              sum += color[i];
-              marked = marked || stub[i] != 0;
+              const size_t i = tile.index(x * scale + sx, y * scale + sy);
+              sum += buf.color[i];
+              marked = marked || buf.stub[i] != 0;
             }
           fb.add(x, y, sum * norm);
           if (marked) fb.markStub(x, y);
