@@ -47,6 +47,14 @@ for pair in kdtree:A4.3 octree:A4.4; do
   grep -q "$task not implemented" "$work/stderr_$accel.txt" || { echo "FAIL: $task is not reported as missing"; exit 1; }
   cmp -s "$work/$accel.pfm" "$work/none.pfm" || { echo "FAIL: the $task fallback changed the picture"; exit 1; }
 done
+# A1: the rasterizer runs on a textured scene; every stub is named, the picture is written and striped
+# (A1.1-A1.3 fall back to the framework's code, A1.4 shades magenta, A1.5 uses the texture's mean colour).
+"$work/build/lightlab" --quiet render "$work/tree/data/scenes/textured_floor.json" -t blinn-phong --width 96 \
+  -o "$work/a1.png" 2>"$work/stderr_a1.txt"
+for task in A1.1 A1.2 A1.3 A1.4 A1.5; do
+  grep -q "$task not implemented" "$work/stderr_a1.txt" || { echo "FAIL: $task is not reported as missing"; exit 1; }
+done
+[ -s "$work/a1.png" ] || { echo "FAIL: no A1 image written"; exit 1; }
 if command -v xvfb-run >/dev/null; then
   (cd "$work/tree" && xvfb-run -a -s '-screen 0 1280x800x24' "$work/build/lightlab" gui \
      --preset tests/gui/two_panes.json --screenshot "$work/gui.png" --frames 3 --timeout 600 >/dev/null)
@@ -55,4 +63,4 @@ if command -v xvfb-run >/dev/null; then
   done
   grep -q '"phase": "done"' "$work/gui.json" || { echo "FAIL: the GUI panes did not finish"; exit 1; }
 fi
-echo "student tree: builds, runs, reports A2.1-A2.5 and A4.1-A4.4 as not implemented (CLI and GUI)"
+echo "student tree: builds, runs, reports A1.1-A1.5, A2.1-A2.5 and A4.1-A4.4 as not implemented (CLI and GUI)"

@@ -396,7 +396,8 @@ TEST(A1_BlinnPhong, SpecularPeakSitsWhereNDotHIsOneAndMatchesTheFormula) {
 TEST(A1_BlinnPhong, CheckerboardIsPerspectiveCorrect) {
   // A checker of 16 x 16 squares over the plane, seen at a grazing angle:
   // affine interpolation of uv would bend the squares; every pixel whose
-  // centre is clearly inside a square must have that square's colour.
+  // centre is clearly inside a square must have that square's colour, as in
+  // the ray-cast image of the same scene.
   const std::string material =
       R"({"texture": {"type": "checker", "squares": [16, 16], "color_a": [1, 0, 0], "color_b": [0, 0, 1]}})";
   std::string text = planeScene(material);
@@ -404,6 +405,7 @@ TEST(A1_BlinnPhong, CheckerboardIsPerspectiveCorrect) {
   const std::string point = R"({"type": "point", "position": [-0.4, 0.9, 1.5], "intensity": [3, 3, 3]})";
   text.replace(text.find(point), point.size(), R"({"type": "directional", "direction": [0, 0, -1], "intensity": [1, 1, 1]})");
   const Rendered r = renderText(text, "blinn-phong", {});
+  const Rendered cast = renderText(text, "raycast", {});  // the ray-cast image of the same scene
   const CameraFrame frame(r.scene.camera);
   int checked = 0;
   for (int y = 0; y < r.image.height(); ++y)
@@ -416,6 +418,7 @@ TEST(A1_BlinnPhong, CheckerboardIsPerspectiveCorrect) {
       if (std::min({frac.x, frac.y, 1.0f - frac.x, 1.0f - frac.y}) < 0.02f) continue;  // on a boundary
       const bool even = (static_cast<int>(std::floor(uv.x)) + static_cast<int>(std::floor(uv.y))) % 2 == 0;
       ASSERT_EQ(r.image.at(x, y), even ? Rgb(1, 0, 0) : Rgb(0, 0, 1)) << x << "," << y;
+      ASSERT_EQ(r.image.at(x, y), cast.image.at(x, y)) << x << "," << y;
       ++checked;
     }
   EXPECT_GT(checked, 1000);

@@ -119,9 +119,13 @@ Command addRenderCommand(CLI::App& app, const GlobalOptions& global) {
     if (stats.work.nonFinite > 0)
       std::fprintf(stderr, "lightlab: %llu NaN/Inf samples were replaced by black\n",
                    static_cast<unsigned long long>(stats.work.nonFinite));
-    std::printf("wrote %s (%dx%d, %d spp, %s, %.3f s render, %.2f Mrays/s)\n", o->output.c_str(), settings.width,
-                settings.height, settings.spp, s.technique->name.c_str(), stats.renderSeconds,
-                static_cast<double>(stats.work.totalRays()) / std::max(stats.renderSeconds, 1e-9) * 1e-6);
+    // Rasterizers trace no rays: their speed is the frame time alone.
+    char speed[64] = "";
+    if (stats.work.totalRays() > 0)
+      std::snprintf(speed, sizeof speed, ", %.2f Mrays/s",
+                    static_cast<double>(stats.work.totalRays()) / std::max(stats.renderSeconds, 1e-9) * 1e-6);
+    std::printf("wrote %s (%dx%d, %d spp, %s, %.3f s render%s)\n", o->output.c_str(), settings.width,
+                settings.height, settings.spp, s.technique->name.c_str(), stats.renderSeconds, speed);
   };
 }
 

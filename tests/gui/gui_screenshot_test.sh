@@ -27,6 +27,7 @@ shot difference
 shot structure
 shot cost
 shot gpu_twin
+shot cpu_gpu
 
 "$CHECK" "$OUT/two_panes.png" pane 0 "$OUT/a.pfm"
 "$CHECK" "$OUT/two_panes.png" pane 1 "$OUT/b.pfm"
@@ -49,6 +50,12 @@ python3 -c "import json,sys; p=json.load(open('$OUT/gpu_twin.json'))['panes'][1]
   || { echo "FAIL: the GPU twin did not render"; exit 1; }
 "$CHECK" "$OUT/gpu_twin.png" pane 1 "$OUT/sphere.pfm"
 echo "ok: the GPU twin matches ray casting"
+# Assignment 1 in the GUI: the software rasterizer's pane is the CLI's picture, and its GLSL twin agrees with it.
+"$LL" --quiet render data/scenes/textured_floor.json -t blinn-phong --set samples=4 --width 160 --height 120 \
+  -o "$OUT/floor_cpu.pfm" >/dev/null
+"$CHECK" "$OUT/cpu_gpu.png" pane 0 "$OUT/floor_cpu.pfm"
+"$CHECK" "$OUT/cpu_gpu.png" pane 1 "$OUT/floor_cpu.pfm"
+echo "ok: blinn-phong and blinn-phong-gl agree"
 # The checker itself must catch a wrong picture: pane 1 is not the 16-sample render.
 if "$CHECK" "$OUT/two_panes.png" pane 1 "$OUT/a.pfm" >/dev/null; then
   echo "FAIL: the checker accepted the wrong reference"; exit 1
