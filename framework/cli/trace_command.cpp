@@ -1,6 +1,7 @@
 // lightlab trace SCENE (--pixel X Y | --ray OX OY OZ DX DY DZ) [-t ..] [-a ..] [--json]
 // Prints the closest hit of one ray: t, object, primitive, barycentrics,
-// position, normals and material.
+// position, normals and material; with --pixel and a recursive technique
+// (-t whitted), also the whole ray tree of the pixel's sample.
 #include <cstdio>
 #include <iostream>
 
@@ -23,6 +24,67 @@ struct TraceOptions {
 };
 
 nlohmann::json vec(const Vec3& v) { return {v.x, v.y, v.z}; }
+
+nlohmann::json treeJson(const RayTree& tree) {
+  nlohmann::json nodes = nlohmann::json::array();
+  for (size_t i = 0; i < tree.nodes.size(); ++i) {
+    const RayTreeNode& n = tree.nodes[i];
+    nlohmann::json j = {{"id", i},
+                        {"parent", n.parent},
+                        {"kind", std::string(kRayKindNames[static_cast<size_t>(n.kind)])},
+                        {"depth", n.depth},
+                        {"origin", vec(n.origin)},
+                        {"direction", vec(n.direction)},
+                        {"throughput", vec(n.throughput)}};
+    if (n.kind == RayKind::Shadow) {
+      j["light_transmittance"] = vec(n.shadowTransmittance);
+    } else if (!n.intersected) {
+      j["traced"] = false;  // stopped by the depth or weight limit
+    } else if (!n.hit) {
+      j["hit"] = nullptr;  // the background
+    } else {
+      j["hit"] = {{"t", n.t},
+                  {"position", vec(n.position)},
+                  {"normal", vec(n.normal)},
+                  {"object", n.object},
+                  {"material", n.material},
+                  {"entering", n.entering},
+                  {"n1", n.n1},
+                  {"n2", n.n2},
+                  {"absorption", vec(n.absorption)}};
+      if (n.fresnel) j["fresnel"] = {{"reflected", *n.fresnel}, {"transmitted", 1.0f - *n.fresnel}};
+      if (n.totalInternalReflection) j["total_internal_reflection"] = true;
+      j["local"] = vec(n.local);
+      j["contribution"] = vec(n.contribution);
+    }
+    if (n.kind != RayKind::Shadow) j["radiance"] = vec(n.radiance);
+    nodes.push_back(j);
+  }
+  return {{"pixel_radiance", vec(tree.pixel)}, {"nodes", nodes}};
+}
+
+// One line per node, indented by depth.
+void printTree(const RayTree& tree) {
+  std::vector<int> indent(tree.nodes.size(), 0);
+  std::printf("ray tree (pixel radiance %.4g %.4g %.4g):\n", static_cast<double>(tree.pixel.r),
+              static_cast<double>(tree.pixel.g), static_cast<double>(tree.pixel.b));
+  for (size_t i = 0; i < tree.nodes.size(); ++i) {
+    const RayTreeNode& n = tree.nodes[i];
+    indent[i] = n.parent < 0 ? 0 : indent[static_cast<size_t>(n.parent)] + 1;
+    std::printf("%*s%s", 2 * indent[i] + 2, "", std::string(kRayKindNames[static_cast<size_t>(n.kind)]).c_str());
+    if (n.kind == RayKind::Shadow)
+      std::printf(": light %s\n", isBlack(n.shadowTransmittance) ? "blocked" : "visible");
+    else if (!n.intersected)
+      std::printf(": not traced (depth or weight limit)\n");
+    else if (!n.hit)
+      std::printf(": background, weight %.3g\n", static_cast<double>(maxComponent(n.throughput)));
+    else
+      std::printf(": %s (%s) at t = %.4g, weight %.3g, contributes %.4g%s\n", n.object.c_str(), n.material.c_str(),
+                  static_cast<double>(n.t), static_cast<double>(maxComponent(n.throughput)),
+                  static_cast<double>(maxComponent(n.contribution)),
+                  n.totalInternalReflection ? ", total internal reflection" : "");
+  }
+}
 
 }  // namespace
 
@@ -91,6 +153,18 @@ Command addTraceCommand(CLI::App& app, const GlobalOptions&) {
     } else {
       out["hit"] = nullptr;
     }
+    // Recursive techniques add the ray tree of the pixel's sample.
+    std::optional<RayTree> tree;
+    if (!o->pixel.empty() && !s.technique->gpu) {
+      RenderSettings settings;
+      settings.width = camera.width;
+      settings.height = camera.height;
+      const RenderContext ctx{s.scene, *s.accel, s.techniqueParams, settings, nullptr};
+      const auto technique = s.technique->make();
+      technique->prepare(ctx);
+      tree = technique->rayTree(ctx, Vec2(std::floor(o->pixel[0]) + 0.5f, std::floor(o->pixel[1]) + 0.5f));
+      if (tree) out["ray_tree"] = treeJson(*tree);
+    }
     if (o->json) {
       std::cout << out.dump(2) << "\n";
     } else if (found) {
@@ -102,6 +176,7 @@ Command addTraceCommand(CLI::App& app, const GlobalOptions&) {
     } else {
       std::printf("miss (the ray leaves the scene)\n");
     }
+    if (tree && !o->json) printTree(*tree);
   };
 }
 

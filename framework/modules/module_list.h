@@ -25,4 +25,5 @@
 #define LIGHTLAB_TECHNIQUES(X) \
   X(blinnPhongTechnique)       \
   X(raycastTechnique)          \
+  X(whittedTechnique)          \
   LIGHTLAB_GPU_TECHNIQUES(X)

@@ -14,6 +14,7 @@
 #include "core/params.h"
 #include "core/rng.h"
 #include "render/frame_buffer.h"
+#include "render/ray_tree.h"
 #include "render/render_stats.h"
 #include "render/student_task.h"
 #include "render/tracer.h"
@@ -56,6 +57,13 @@ class Technique {
   // return early (leaving the pass incomplete) when `cancel` becomes true.
   virtual void renderPass(const RenderContext& ctx, int pass, FrameBuffer& fb, WorkCounters& counters,
                           const std::atomic<bool>& cancel) = 0;
+  // The ray tree of one sample at continuous image position `position`
+  // (after prepare()), for techniques that trace recursively; nullopt otherwise.
+  virtual std::optional<RayTree> rayTree(const RenderContext& ctx, Vec2 position) const {
+    (void)ctx;
+    (void)position;
+    return std::nullopt;
+  }
 };
 
 // One pixel sample as a PixelTechnique sees it.

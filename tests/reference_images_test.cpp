@@ -1,9 +1,12 @@
-// Assignment 1's task scenes against their reference images
-// (data/references/a1/references.json): every render must meet the named
-// tolerances, and every listed known mistake must miss them -- the
-// tolerances pass a correct solution and catch a wrong one.
+// The assignments' task scenes against their reference images: every
+// data/references/<assignment>/references.json lists renders (scene,
+// technique parameters, size) with named tolerances; each render must meet
+// them, and every listed known mistake must miss them -- the tolerances
+// pass a correct solution and catch a wrong one.
 // LIGHTLAB_UPDATE_REFERENCES=1 rewrites the reference images instead.
 #include <cstdlib>
+#include <filesystem>
+#include <iostream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -19,7 +22,7 @@
 namespace ll {
 namespace {
 
-const std::string kDir = std::string(LIGHTLAB_DATA_DIR) + "/references/a1/";
+namespace fs = std::filesystem;
 
 Image renderEntry(const nlohmann::json& entry, const nlohmann::json& set, const std::string& techniqueName) {
   const Scene scene = loadScene(std::string(LIGHTLAB_DATA_DIR) + "/" + entry.at("scene").get<std::string>());
@@ -51,12 +54,12 @@ bool withinTolerance(const ImageError& error, const nlohmann::json& entry, std::
   return ok;
 }
 
-TEST(A1_Reference, TaskScenesMatchTheirReferencesAndKnownMistakesDoNot) {
-  const JsonDocument doc = JsonDocument::load(kDir + "references.json");
+void checkManifest(const std::string& dir) {
+  const JsonDocument doc = JsonDocument::load(dir + "references.json");
   const std::string technique = doc.root().at("technique").get<std::string>();
   const bool update = std::getenv("LIGHTLAB_UPDATE_REFERENCES") != nullptr;
   for (const auto& entry : doc.root().at("references")) {
-    const std::string path = kDir + entry.at("image").get<std::string>();
+    const std::string path = dir + entry.at("image").get<std::string>();
     SCOPED_TRACE(path);
     const Image image = renderEntry(entry, entry.at("set"), technique);
     if (update) {
@@ -75,6 +78,17 @@ TEST(A1_Reference, TaskScenesMatchTheirReferencesAndKnownMistakesDoNot) {
                 << mistake.at("why").get<std::string>() << "': " << mistakeReport << "\n";
     }
   }
+}
+
+TEST(ReferenceImages, TaskScenesMatchTheirReferencesAndKnownMistakesDoNot) {
+  int manifests = 0;
+  for (const auto& e : fs::directory_iterator(std::string(LIGHTLAB_DATA_DIR) + "/references")) {
+    if (!fs::exists(e.path() / "references.json")) continue;
+    SCOPED_TRACE(e.path().string());
+    checkManifest(e.path().string() + "/");
+    ++manifests;
+  }
+  EXPECT_GE(manifests, 2);
 }
 
 }  // namespace

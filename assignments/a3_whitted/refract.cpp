@@ -1,0 +1,24 @@
+// A3.2 Refraction direction (Snell's law) and total internal reflection.
+#include "a3_tasks.h"
+#include "render/student_task.h"
+
+namespace ll::a3 {
+
+bool refract(Vec3 d, Vec3 n, float eta, Vec3& t) {
+#if LIGHTLAB_SOLUTION  // A3.2
+  const float cosI = -glm::dot(d, n);
+  const float sin2T = eta * eta * std::max(0.0f, 1.0f - cosI * cosI);
+  if (sin2T > 1.0f) return false;  // total internal reflection
+  const float cosT = std::sqrt(1.0f - sin2T);
+  t = glm::normalize(eta * d + (eta * cosI - cosT) * n);
+  return true;
+#else
+  (void)n;
+  (void)eta;
+  LIGHTLAB_TODO("A3.2", "refraction and total internal reflection (assignments/a3_whitted/refract.cpp)");
+  t = d;  // stand-in: no bending, glass looks like a clear window
+  return true;
+#endif
+}
+
+}  // namespace ll::a3
