@@ -209,6 +209,8 @@ void applyPreset(AppState& app, const ViewPreset& preset) {
   app.uiScale = preset.uiScale;
   app.showStructure = preset.showStructure;
   app.structureDepth = preset.structureDepth;
+  app.inspector = RayInspector{};
+  if (preset.inspectPane >= 0) inspectPixel(app, preset.inspectPane, preset.inspectPixel);
   const bool sameScene = !app.scenePath.empty() && fs::exists(preset.scene) &&
                          fs::exists(app.scenePath) && fs::equivalent(preset.scene, app.scenePath);
   if (preset.camera) {
@@ -241,6 +243,8 @@ ViewPreset capturePreset(const AppState& app) {
   p.uiScale = app.uiScale;
   p.showStructure = app.showStructure;
   p.structureDepth = app.structureDepth;
+  p.inspectPane = app.inspector.pane;
+  p.inspectPixel = app.inspector.pixel;
   for (const PaneState& pane : app.panes) {
     PaneSetup s;
     s.technique = pane.technique;

@@ -182,6 +182,33 @@ TEST(AppActions, ACameraChangeRestartsEveryActivePaneAndErrorsFollowTheReference
   EXPECT_FALSE(app.panes[2].shown.image);  // pane C is hidden with two panes: never rendered
 }
 
+TEST(AppActions, AClickedPixelOfAWhittedPaneGetsItsRayTreeAndFollowsTheCamera) {
+  AppState app;
+  makeSmall(app);
+  setTechnique(app, 0, "whitted");
+  app.panes[0].accelerator = "bvh";
+  openScene(app, kScenes + "whitted_1980.json");
+  waitForSceneLoad(app);
+  waitPanes(app);
+  inspectPixel(app, 0, Vec2(19.5f, 10.5f));  // the glass sphere at 32 x 24
+  refreshRayTree(app);
+  ASSERT_TRUE(app.inspector.tree.has_value()) << app.inspector.note;
+  const RayTree first = *app.inspector.tree;
+  EXPECT_GT(first.nodes.size(), 5u);
+  EXPECT_EQ(first.nodes[0].object, "glass_shell");
+  app.camera.eye += Vec3(2, 0, 0);  // a new view: the same pixel now sees something else
+  app.cameraChanged = true;
+  waitPanes(app);
+  refreshRayTree(app);
+  ASSERT_TRUE(app.inspector.tree.has_value());
+  EXPECT_NE(app.inspector.tree->nodes[0].origin, first.nodes[0].origin);
+  // A technique without recursion says so instead of drawing nothing silently.
+  inspectPixel(app, 1, Vec2(10.5f, 10.5f));
+  refreshRayTree(app);
+  EXPECT_FALSE(app.inspector.tree.has_value());
+  EXPECT_TRUE(contains(app.inspector.note, "whitted")) << app.inspector.note;
+}
+
 TEST(AppActions, ADroppedFileOpensAsAPresetOrAsAScene) {
   AppState app;
   makeSmall(app);

@@ -20,6 +20,7 @@
 #include "gui/display_image.h"
 #include "gui/gl_texture.h"
 #include "gui/pane_renderer.h"
+#include "gui/ray_inspector.h"
 #include "gui/view_preset.h"
 #include "metrics/image_metrics.h"
 #include "scene/scene.h"
@@ -124,6 +125,7 @@ struct AppState {
   float exposure = 0.0f;       // display exposure, stops
   bool showStructure = false;  // draw the accelerator's nodes over each pane
   int structureDepth = 3;      // at this depth (root = 0)
+  RayInspector inspector;      // the ray tree of a clicked pixel
   float uiScale = 1.0f;        // user's scale, times the monitor's content scale
   float contentScale = 1.0f;
   float appliedFontScale = 0.0f;

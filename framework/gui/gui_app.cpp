@@ -99,6 +99,7 @@ void updateApp(AppState& app) {
   watchSceneFile(app);
   submitPanes(app);
   refreshPanes(app);
+  refreshRayTree(app);
 }
 
 void takeScreenshot(AppState& app, GLFWwindow* window, const std::string& path) {

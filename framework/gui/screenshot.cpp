@@ -69,6 +69,11 @@ std::string saveScreenshotSidecar(const AppState& app, const std::string& path, 
                   {"rect", rect(app.compareRect)},
                   {"diff_max", app.diff.usedMax}};
   const auto vec = [](const Vec3& v) { return json::array({v.x, v.y, v.z}); };
+  if (app.inspector.pane >= 0)
+    j["ray_tree"] = {{"pane", app.inspector.pane},
+                     {"pixel", {app.inspector.pixel.x, app.inspector.pixel.y}},
+                     {"nodes", app.inspector.tree ? app.inspector.tree->nodes.size() : 0},
+                     {"note", app.inspector.note}};
   j["camera"] = {{"eye", vec(app.camera.eye)},
                  {"target", vec(app.camera.target)},
                  {"up", vec(app.camera.up)},

@@ -1,5 +1,6 @@
 #include "gui/side_panel.h"
 
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -12,6 +13,7 @@
 #include "core/error.h"
 #include "gui/app_actions.h"
 #include "gui/param_widgets.h"
+#include "gui/ray_inspector.h"
 #include "gui/viewport.h"
 #include "modules/registry.h"
 
@@ -341,6 +343,7 @@ void drawSidePanel(AppState& app, GLFWwindow* window, float width, float height)
   layoutSection(app);
   for (int i = 0; i < kMaxPanes; ++i)
     if (paneActive(app, i)) paneSection(app, i);
+  rayTreeSection(app);
   presetSection(app);
   viewSection(app, window);
   messagesSection(app);

@@ -119,7 +119,7 @@ ViewPreset parsePreset(const std::string& text, const std::string& file,
               std::to_string(kFormatVersion) +
               " (is this a scene? open scenes with `lightlab gui SCENE`)");
   root.allowOnly({"lightlab_preset", "description", "scene", "camera", "width", "height", "panes",
-                  "pane_count", "compare", "ui_scale", "exposure", "structure"});
+                  "pane_count", "compare", "ui_scale", "exposure", "structure", "inspect"});
 
   ViewPreset p;
   const std::string scene = root.string("scene");
@@ -137,6 +137,17 @@ ViewPreset parsePreset(const std::string& text, const std::string& file,
     st.allowOnly({"show", "depth"});
     p.showStructure = st.boolean("show", true);
     p.structureDepth = st.integer("depth", 3, 0, 64);
+  }
+
+  if (root.has("inspect")) {  // {"pane": 0, "pixel": [x, y]}: that pixel's ray tree
+    const JsonNode in = root.child("inspect");
+    in.requireObject();
+    in.allowOnly({"pane", "pixel"});
+    p.inspectPane = in.integer("pane", 0, 0, kMaxPanes - 1);
+    const JsonNode px = in.child("pixel");
+    px.requireArray();
+    if (px.size() != 2) px.fail("pixel must be [x, y]");
+    p.inspectPixel = Vec2(std::floor(px.at(0).asNumber()) + 0.5f, std::floor(px.at(1).asNumber()) + 0.5f);
   }
 
   const JsonNode panes = root.child("panes");
@@ -199,6 +210,9 @@ nlohmann::json presetToJson(const ViewPreset& p, const std::string& baseDir) {
   j["ui_scale"] = p.uiScale;
   j["pane_count"] = p.paneCount;
   j["structure"] = {{"show", p.showStructure}, {"depth", p.structureDepth}};
+  if (p.inspectPane >= 0)
+    j["inspect"] = {{"pane", p.inspectPane},
+                    {"pixel", {static_cast<int>(p.inspectPixel.x), static_cast<int>(p.inspectPixel.y)}}};
   j["panes"] = json::array();
   for (int i = 0; i < static_cast<int>(p.panes.size()) && i < kMaxPanes; ++i) {
     const PaneSetup& pane = p.panes[static_cast<size_t>(i)];

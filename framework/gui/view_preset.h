@@ -52,6 +52,8 @@ struct ViewPreset {
   float exposure = 0.0f;       // display exposure in stops
   bool showStructure = false;  // the accelerators' nodes drawn over the panes
   int structureDepth = 3;      // at this depth (root = 0)
+  int inspectPane = -1;        // the ray tree of this pane's pixel is shown (-1 = none)
+  Vec2 inspectPixel{0.0f};     // continuous image position at the render size
 };
 
 // Reads a preset, validating every name and value against the registries

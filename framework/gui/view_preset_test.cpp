@@ -60,6 +60,8 @@ TEST(ViewPreset, SaveThenLoadGivesTheSameView) {
   p.compare.wipe = 0.3f;
   p.uiScale = 1.5f;
   p.exposure = -1.0f;
+  p.inspectPane = 1;
+  p.inspectPixel = Vec2(12.5f, 7.5f);
   const std::string file = (dir / "view.json").string();
   savePreset(p, file);
   EXPECT_TRUE(
@@ -86,6 +88,8 @@ TEST(ViewPreset, SaveThenLoadGivesTheSameView) {
   EXPECT_EQ(q.compare.wipe, 0.3f);
   EXPECT_EQ(q.uiScale, 1.5f);
   EXPECT_EQ(q.exposure, -1.0f);
+  EXPECT_EQ(q.inspectPane, 1);
+  EXPECT_EQ(q.inspectPixel, Vec2(12.5f, 7.5f));
   fs::remove_all(dir);
 }
 
@@ -105,6 +109,11 @@ TEST(ViewPreset, BadPresetsNameThePlaceAndTheAllowedValues) {
   e = errorOf(
       [&] { parse(head + R"("panes": [{"technique": "raycast", "params": {"bogus": 1}}]})"); });
   EXPECT_TRUE(contains(e, "bogus")) << e;
+
+  e = errorOf([&] { parse(head + R"("panes": [{"technique": "whitted"}], "inspect": {"pane": 0, "pixel": [3]}})"); });
+  EXPECT_TRUE(contains(e, "pixel must be [x, y]")) << e;
+  e = errorOf([&] { parse(head + R"("panes": [{"technique": "whitted"}], "inspect": {"pane": 9, "pixel": [3, 4]}})"); });
+  EXPECT_TRUE(contains(e, "pane")) << e;
 
   e = errorOf([&] {
     parse(head + R"("panes": [{"technique": "raycast"}], "compare": {"mode": "blend"}})");

@@ -13,6 +13,7 @@
 #include "core/error.h"
 #include "core/image.h"
 #include "gui/app_actions.h"
+#include "gui/ray_inspector.h"
 #include "gui/structure_overlay.h"
 #include "gui/view_camera.h"
 #include "modules/registry.h"
@@ -279,6 +280,13 @@ void drawViewportContent(AppState& app, float x, float y, float w, float h) {
                    true);
       }
       if (app.showStructure && app.scene) drawPaneStructure(dl, app, i, r, lh);
+      if (app.inspector.pane == i && app.scene) {
+        const Camera camera = renderCamera(*app.scene, renderSettings(app, p));
+        if (app.inspector.tree) drawRayTree(dl, camera, *app.inspector.tree, app.inspector.highlighted, r.x, r.y, r.w, r.h);
+        const float px = r.x + app.inspector.pixel.x / static_cast<float>(camera.width) * r.w;
+        const float py = r.y + app.inspector.pixel.y / static_cast<float>(camera.height) * r.h;
+        dl->AddCircle(ImVec2(px, py), 6.0f, IM_COL32(255, 0, 255, 255), 16, 2.0f);
+      }
       captionBox(app.overlayRects, dl, r.x, r.y, paneCaption(app, i), IM_COL32(0, 0, 0, 170), r.w);
       paneBanners(dl, app, p, r);
     }
@@ -372,6 +380,18 @@ void handleCameraInput(AppState& app, GLFWwindow* window, float x, float y, floa
         app.cameraChanged = true;
       }
     }
+    // A click without a drag on a pane's image (side by side) selects that pixel for the ray-tree inspector.
+    if (ImGui::IsMouseReleased(0) && io.MouseDragMaxDistanceSqr[0] < 9.0f && !app.draggingWipe &&
+        app.compare.mode == CompareMode::SideBySide && app.scene)
+      for (int i = 0; i < app.paneCount; ++i) {
+        const auto& pr = app.paneRects[static_cast<size_t>(i)];
+        const ImVec2 m = io.MousePos;
+        if (pr[2] <= 0 || m.x < pr[0] || m.y < pr[1] || m.x >= pr[0] + pr[2] || m.y >= pr[1] + pr[3]) continue;
+        const RenderSettings s = renderSettings(app, app.panes[static_cast<size_t>(i)]);
+        inspectPixel(app, i,
+                     Vec2(std::floor((m.x - pr[0]) / pr[2] * static_cast<float>(s.width)) + 0.5f,
+                          std::floor((m.y - pr[1]) / pr[3] * static_cast<float>(s.height)) + 0.5f));
+      }
     if (io.MouseWheel != 0.0f && area.contains(io.MousePos)) {
       zoom(app.camera, std::pow(0.85f, io.MouseWheel));
       app.cameraChanged = true;

@@ -28,6 +28,7 @@ shot structure
 shot cost
 shot gpu_twin
 shot cpu_gpu
+shot ray_tree
 
 "$CHECK" "$OUT/two_panes.png" pane 0 "$OUT/a.pfm"
 "$CHECK" "$OUT/two_panes.png" pane 1 "$OUT/b.pfm"
@@ -56,6 +57,15 @@ echo "ok: the GPU twin matches ray casting"
 "$CHECK" "$OUT/cpu_gpu.png" pane 0 "$OUT/floor_cpu.pfm"
 "$CHECK" "$OUT/cpu_gpu.png" pane 1 "$OUT/floor_cpu.pfm"
 echo "ok: blinn-phong and blinn-phong-gl agree"
+# Assignment 3 in the GUI: whitted renders as on the command line, and the clicked pixel's ray tree is drawn.
+"$LL" --quiet render data/scenes/whitted_1980.json -t whitted -a bvh --width 320 --height 240 -o "$OUT/whitted.pfm" >/dev/null
+"$CHECK" "$OUT/ray_tree.png" pane 1 "$OUT/whitted.pfm"
+python3 -c "import json,sys; t=json.load(open('$OUT/ray_tree.json'))['ray_tree']; sys.exit(0 if t['nodes'] > 10 and t['pane'] == 0 else 1)" \
+  || { echo "FAIL: no ray tree for the inspected pixel"; exit 1; }
+if "$CHECK" "$OUT/ray_tree.png" pane 0 "$OUT/whitted.pfm" >/dev/null; then  # the same picture plus the rays
+  echo "FAIL: the ray tree is not drawn over pane A"; exit 1
+fi
+echo "ok: whitted pane and its ray tree"
 # The checker itself must catch a wrong picture: pane 1 is not the 16-sample render.
 if "$CHECK" "$OUT/two_panes.png" pane 1 "$OUT/a.pfm" >/dev/null; then
   echo "FAIL: the checker accepted the wrong reference"; exit 1
