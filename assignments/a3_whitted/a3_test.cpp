@@ -404,6 +404,17 @@ TEST(A3_Whitted, DiffuseOnlySceneRendersAsRayCastingWithNoReflectionOrRefraction
         ASSERT_NEAR(w.image.at(x, y)[c], r.image.at(x, y)[c], 1e-5f * (1.0f + r.image.at(x, y)[c])) << x << "," << y;
 }
 
+TEST(A3_Whitted, NoShadowRaysWhereNothingCanCastAShadow) {
+  // One convex sphere and a point light: no surface can stand between a point and the light.
+  const Scene lone = loadScene(std::string(LIGHTLAB_DATA_DIR) + "/scenes/tests/sphere_point_light.json");
+  const Rendered r = render(lone, "whitted", {}, 32, 32);
+  EXPECT_EQ(rays(r.stats, RayKind::Shadow), 0u);
+  EXPECT_EQ(rays(r.stats, RayKind::Reflection) + rays(r.stats, RayKind::Refraction), 0u);
+  EXPECT_EQ(rays(r.stats, RayKind::Camera), 32u * 32u);
+  const Scene shadowed = loadScene(std::string(LIGHTLAB_DATA_DIR) + "/scenes/tests/shadow_quad.json");
+  EXPECT_GT(rays(render(shadowed, "whitted", {}, 32, 32).stats, RayKind::Shadow), 0u);
+}
+
 TEST(A3_Whitted, DepthZeroIsRayCastingAndDeeperAddsReflections) {
   const Scene scene = loadScene(std::string(LIGHTLAB_DATA_DIR) + "/scenes/whitted_1980.json");
   const Rendered flat = render(scene, "whitted", {{"max_depth", "0"}}, 64, 48);
