@@ -75,13 +75,7 @@ void refreshRayTree(AppState& app) {
 
 void drawRayTree(ImDrawList* dl, const Camera& camera, const RayTree& tree, int highlighted, float x, float y,
                  float w, float h) {
-  const float sx = w / static_cast<float>(camera.width), sy = h / static_cast<float>(camera.height);
-  const auto toScreen = [&](const Vec3& p, ImVec2& out) {
-    float px = 0, py = 0;
-    if (!projectToImage(camera, p, px, py)) return false;
-    out = ImVec2(x + px * sx, y + py * sy);
-    return true;
-  };
+  const auto toScreen = [&](const Vec3& p, ImVec2& out) { return projectToRect(camera, p, x, y, w, h, out.x, out.y); };
   // Misses are drawn this far: the camera's distance to its target, a scale of the view.
   const float far = 2.0f * glm::length(camera.target - camera.eye);
   dl->PushClipRect(ImVec2(x, y), ImVec2(x + w, y + h), true);

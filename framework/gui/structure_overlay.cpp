@@ -19,15 +19,17 @@ bool projectToImage(const Camera& camera, const Vec3& p, float& px, float& py) {
   return std::isfinite(px) && std::isfinite(py);
 }
 
+bool projectToRect(const Camera& camera, const Vec3& p, float x, float y, float w, float h, float& sx, float& sy) {
+  float px = 0, py = 0;
+  if (!projectToImage(camera, p, px, py)) return false;
+  sx = x + px * w / static_cast<float>(camera.width);
+  sy = y + py * h / static_cast<float>(camera.height);
+  return true;
+}
+
 int drawStructure(ImDrawList* dl, const Camera& camera, const std::vector<NodeShape>& nodes,
                   float x, float y, float w, float h, int maxNodes) {
-  const float sx = w / static_cast<float>(camera.width), sy = h / static_cast<float>(camera.height);
-  const auto toScreen = [&](const Vec3& p, ImVec2& out) {
-    float px = 0, py = 0;
-    if (!projectToImage(camera, p, px, py)) return false;
-    out = ImVec2(x + px * sx, y + py * sy);
-    return true;
-  };
+  const auto toScreen = [&](const Vec3& p, ImVec2& out) { return projectToRect(camera, p, x, y, w, h, out.x, out.y); };
   dl->PushClipRect(ImVec2(x, y), ImVec2(x + w, y + h), true);
   const ImU32 inner = IM_COL32(80, 220, 255, 170), leaf = IM_COL32(255, 200, 60, 170);
   const int count = std::min(static_cast<int>(nodes.size()), maxNodes);

@@ -15,6 +15,8 @@ namespace ll::gui {
 // Projects a world point to image pixels of `camera` (its width x height,
 // top-left origin). Returns false if the point is not in front of the eye.
 bool projectToImage(const Camera& camera, const Vec3& p, float& px, float& py);
+// The same, to screen coordinates in the rectangle (x, y, w, h) that shows the image.
+bool projectToRect(const Camera& camera, const Vec3& p, float x, float y, float w, float h, float& sx, float& sy);
 
 // Draws `nodes` into the screen rectangle (x, y, w, h) that shows `camera`'s
 // image. At most `maxNodes` are drawn (the rest are counted in the return).
