@@ -105,7 +105,7 @@ inline bool closerPrimitiveHit(const LeafPrimitives& bvh, uint32_t slot, const T
   const float tmax = (hit.prim != Hit::kNone && prim < hit.prim) ? nextFloatUp(hit.t) : hit.t;
   float t, b1 = 0.0f, b2 = 0.0f;
   if (prim < bvh.triangleCount) {
-    const LeafTriangle& tri = bvh.triangles[slot];
+    const LeafTriangle& tri = bvh.triangle(slot, prim);
     if (!intersectTriangle(r.wray, tri.p0, tri.p1, tri.p2, r.ray.tmin, tmax, t, b1, b2)) return false;
   } else {
     const Sphere& s = bvh.geometry->spheres[prim - bvh.triangleCount];
@@ -123,7 +123,7 @@ inline bool anyPrimitiveHit(const LeafPrimitives& bvh, uint32_t slot, const Trav
   const uint32_t prim = bvh.primIds[slot];
   float t, b1, b2;
   if (prim < bvh.triangleCount) {
-    const LeafTriangle& tri = bvh.triangles[slot];
+    const LeafTriangle& tri = bvh.triangle(slot, prim);
     return intersectTriangle(r.wray, tri.p0, tri.p1, tri.p2, r.ray.tmin, r.ray.tmax, t, b1, b2);
   }
   const Sphere& s = bvh.geometry->spheres[prim - bvh.triangleCount];

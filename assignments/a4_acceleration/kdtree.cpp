@@ -152,7 +152,7 @@ class Builder {
   void makeLeaf(uint32_t index, const std::vector<KdPrim>& prims, double area) {
     tree_.nodes[index] =
         KdNode::leafNode(static_cast<uint32_t>(tree_.primIds.size()), static_cast<uint32_t>(prims.size()));
-    for (const KdPrim& p : prims) tree_.append(p.prim);
+    for (const KdPrim& p : prims) tree_.primIds.push_back(p.prim);
     sah_ += static_cast<double>(s_.intersectionCost) * static_cast<double>(prims.size()) * area;
   }
 
@@ -236,7 +236,7 @@ KdTree buildKdTree(const Geometry& geometry, const KdSettings& settings, KdBuild
     const int autoDepth = static_cast<int>(std::lround(8.0 + 1.3 * std::log2(static_cast<double>(n))));
     const int maxDepth = std::clamp(settings.maxDepth > 0 ? settings.maxDepth : autoDepth, 0, kKdMaxDepth);
     tree.primIds.reserve(2 * static_cast<size_t>(n));
-    tree.triangles.reserve(2 * static_cast<size_t>(n));
+    tree.storeTrianglesByPrimitive();
     // Clipping rounds by a few ulps of the coordinates: pad by far more.
     const Vec3 far = glm::max(glm::abs(tree.bounds.min), glm::abs(tree.bounds.max));
     const float pad = 1e-5f * (std::max({far.x, far.y, far.z}) + tree.bounds.diagonal());

@@ -62,7 +62,7 @@ class Builder {
       }
     }
     tree_.nodes[index] = {static_cast<uint32_t>(tree_.primIds.size()), static_cast<uint32_t>(n)};
-    for (uint32_t p : prims) tree_.append(p);
+    for (uint32_t p : prims) tree_.primIds.push_back(p);
     sah_ += static_cast<double>(n) * area;
   }
 
@@ -106,6 +106,7 @@ Octree buildOctree(const Geometry& geometry, const OctreeSettings& settings, Oct
     OctreeSettings s = settings;
     s.maxDepth = std::clamp(s.maxDepth, 0, kOctreeMaxDepth);
     s.maxLeaf = std::max(s.maxLeaf, 1);
+    tree.storeTrianglesByPrimitive();
     tree.nodes.emplace_back();
     Builder builder(tree, boxes, s);
     builder.build(0, prims, tree.bounds.min, tree.bounds.max, 0);
