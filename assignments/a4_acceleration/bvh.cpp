@@ -8,6 +8,7 @@
 #include <memory>
 #include <span>
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
 
@@ -22,6 +23,7 @@ struct BuildNode {
   Bounds3 bounds;
   std::unique_ptr<BuildNode> left, right;  // both null for a leaf
   size_t first = 0, count = 0;             // the node's primitives: buildPrims[first, first + count)
+  size_t subtreeNodes = 1;                 // nodes in this subtree, itself included
 };
 
 constexpr size_t kParallelSubtree = 4096;  // primitives; smaller subtrees are built serially
@@ -54,6 +56,7 @@ std::unique_ptr<BuildNode> buildNode(std::span<BuildPrim> all, size_t first, siz
     buildLeft();
     buildRight();
   }
+  node->subtreeNodes = 1 + node->left->subtreeNodes + node->right->subtreeNodes;
   return node;
 }
 
@@ -151,21 +154,22 @@ FlatBvh buildBvh(const Geometry& geometry, const SplitSettings& settings, Boundi
       const ScopedTaskLog scope(&buildLog);
       root = buildNode(prims, 0, n, settings, 0);
     }
-    bvh.nodes.reserve(2 * static_cast<size_t>(n));
+    bvh.nodes.reserve(root->subtreeNodes);  // exactly: no regrowth, no shrinking copy
     flatten(*root, bvh.nodes, 0, depth);
     bvh.sceneCentre = root->bounds.center();
     bvh.sceneRadius = 0.5f * root->bounds.diagonal();
-    bvh.nodes.shrink_to_fit();
     bvh.primIds.resize(n);
     bvh.triangles.resize(n);
-    for (uint32_t s = 0; s < n; ++s) {
-      const uint32_t prim = prims[s].prim;
-      bvh.primIds[s] = prim;
-      if (prim < bvh.triangleCount) {
-        const glm::uvec3& tri = geometry.triangles[prim];
-        bvh.triangles[s] = {geometry.positions[tri.x], geometry.positions[tri.y], geometry.positions[tri.z]};
+    tbb::parallel_for(tbb::blocked_range<uint32_t>(0, n, 4096), [&](const tbb::blocked_range<uint32_t>& range) {
+      for (uint32_t s = range.begin(); s < range.end(); ++s) {
+        const uint32_t prim = prims[s].prim;
+        bvh.primIds[s] = prim;
+        if (prim < bvh.triangleCount) {
+          const glm::uvec3& tri = geometry.triangles[prim];
+          bvh.triangles[s] = {geometry.positions[tri.x], geometry.positions[tri.y], geometry.positions[tri.z]};
+        }
       }
-    }
+    });
     if (volume == BoundingVolume::Sphere) makeSpheres(bvh);
   }
   if (info) {
