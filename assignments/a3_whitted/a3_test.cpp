@@ -87,7 +87,7 @@ void transmittances(float cosI, float n1, float n2, float& ts2, float& tp2) {
 }
 
 TEST(A3_3_Fresnel, ReflectedPlusTransmittedIsOneAtEveryAngle) {
-  for (const auto [n1, n2] : {std::pair{1.0f, 1.5f}, std::pair{1.5f, 1.0f}, std::pair{1.33f, 1.5f}}) {
+  for (const auto& [n1, n2] : {std::pair{1.0f, 1.5f}, std::pair{1.5f, 1.0f}, std::pair{1.33f, 1.5f}}) {
     for (float deg = 0.0f; deg < 89.5f; deg += 2.5f) {
       const float cosI = std::cos(deg * kDeg);
       if ((n1 / n2) * std::sin(deg * kDeg) >= 1.0f) break;  // beyond the critical angle
@@ -384,8 +384,11 @@ TEST(A3_Whitted, FarFromTheOriginNoSecondaryRayReHitsItsOwnSurface) {
         const RayTree tree = treeAt(scene, x, y);
         if (tree.nodes.empty() || tree.nodes[0].object != "mirror") continue;
         ++mirrorHits;
-        for (const RayTreeNode& n : tree.nodes)
-          if (n.kind != RayKind::Camera) EXPECT_NE(n.object, "mirror") << offset << " pixel " << x << "," << y;
+        for (const RayTreeNode& n : tree.nodes) {
+          if (n.kind != RayKind::Camera) {
+            EXPECT_NE(n.object, "mirror") << offset << " pixel " << x << "," << y;
+          }
+        }
       }
     EXPECT_GT(mirrorHits, 20) << offset;
   }
@@ -430,7 +433,7 @@ TEST(A3_Whitted, DepthZeroIsRayCastingAndDeeperAddsReflections) {
 
 TEST(A3_Whitted, TreeContributionsSumToThePixel) {
   const Scene scene = loadScene(std::string(LIGHTLAB_DATA_DIR) + "/scenes/whitted_1980.json");
-  for (const auto [x, y] : {std::pair{380, 200}, std::pair{250, 200}, std::pair{100, 400}}) {
+  for (const auto& [x, y] : {std::pair{380, 200}, std::pair{250, 200}, std::pair{100, 400}}) {
     const RayTree tree = treeAt(scene, x, y);
     Rgb sum(0.0f);
     bool background = false;
