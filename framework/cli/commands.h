@@ -20,6 +20,7 @@ Command addRenderCommand(CLI::App& app, const GlobalOptions& global);
 Command addInfoCommand(CLI::App& app, const GlobalOptions& global);
 Command addTraceCommand(CLI::App& app, const GlobalOptions& global);
 Command addCompareCommand(CLI::App& app, const GlobalOptions& global);
+Command addRadiosityCommand(CLI::App& app, const GlobalOptions& global);
 #ifdef LIGHTLAB_HAVE_GUI
 Command addGuiCommand(CLI::App& app, const GlobalOptions& global);
 #endif

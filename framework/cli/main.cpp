@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
       {"info", addInfoCommand(app, global)},
       {"trace", addTraceCommand(app, global)},
       {"compare", addCompareCommand(app, global)},
+      {"radiosity", addRadiosityCommand(app, global)},
   };
 #ifdef LIGHTLAB_HAVE_GUI
   commands["gui"] = addGuiCommand(app, global);

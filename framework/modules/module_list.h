@@ -26,4 +26,5 @@
   X(blinnPhongTechnique)       \
   X(raycastTechnique)          \
   X(whittedTechnique)          \
+  X(radiosityTechnique)        \
   LIGHTLAB_GPU_TECHNIQUES(X)

@@ -43,6 +43,8 @@ void TaskLog::clear() {
 ScopedTaskLog::ScopedTaskLog(TaskLog* log) : previous_(tCurrentLog) { tCurrentLog = log; }
 ScopedTaskLog::~ScopedTaskLog() { tCurrentLog = previous_; }
 
+TaskLog* currentTaskLog() { return tCurrentLog; }
+
 void reportMissingTask(const char* id, const char* what, bool marksPixels) {
   if (marksPixels) tStubUsed = true;
   if (!tCurrentLog) return;

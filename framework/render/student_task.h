@@ -48,6 +48,9 @@ class ScopedTaskLog {
   TaskLog* previous_;
 };
 
+// The current thread's log (null if none): parallel framework code hands it to its workers.
+TaskLog* currentTaskLog();
+
 // Records a missing task in the current thread's log and, if `marksPixels`,
 // flags the current sample. Safe to call with no log installed. Cheap when
 // called per ray: after the first report of an id to a log, a thread skips the lock.

@@ -1,0 +1,288 @@
+#include "form_factors.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <numbers>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "a5_tasks.h"
+#include "core/rng.h"
+#include "render/ray_offset.h"
+#include "render/student_task.h"
+
+namespace ll::a5 {
+
+namespace {
+
+struct Entry {
+  uint32_t j;
+  float f;
+};
+
+// Orthonormal tangents (t, b) of unit n.
+void tangentFrame(const Vec3& n, Vec3& t, Vec3& b) {
+  t = glm::normalize(std::abs(n.x) > 0.5f ? glm::cross(n, Vec3(0, 1, 0)) : glm::cross(n, Vec3(1, 0, 0)));
+  b = glm::cross(n, t);
+}
+
+// The hemicube's cells: unit directions in the local frame (z = normal) and
+// delta form factors. Top face z = 1, res x res cells over [-1, 1]^2:
+// dF = dA / (pi (x^2 + y^2 + 1)^2). Side faces (x or y = +-1, z in [0, 1],
+// res x res/2 cells): dF = z dA / (pi (u^2 + z^2 + 1)^2), u the in-face coordinate.
+struct HemicubeCell {
+  Vec3 dir;
+  float dF;
+};
+std::vector<HemicubeCell> hemicube(int res) {
+  std::vector<HemicubeCell> cells;
+  const float step = 2.0f / static_cast<float>(res), dA = step * step;
+  for (int j = 0; j < res; ++j)
+    for (int i = 0; i < res; ++i) {
+      const float x = -1.0f + (static_cast<float>(i) + 0.5f) * step, y = -1.0f + (static_cast<float>(j) + 0.5f) * step;
+      const float r2 = x * x + y * y + 1.0f;
+      cells.push_back({glm::normalize(Vec3(x, y, 1.0f)), dA / (kPi * r2 * r2)});
+    }
+  const int half = std::max(res / 2, 1);
+  for (int side = 0; side < 4; ++side)
+    for (int k = 0; k < half; ++k)
+      for (int i = 0; i < res; ++i) {
+        const float u = -1.0f + (static_cast<float>(i) + 0.5f) * step;
+        const float z = (static_cast<float>(k) + 0.5f) / static_cast<float>(half);
+        const float dAside = step * (1.0f / static_cast<float>(half));
+        const float r2 = u * u + z * z + 1.0f;
+        Vec3 d = side == 0 ? Vec3(1, u, z) : side == 1 ? Vec3(-1, u, z) : side == 2 ? Vec3(u, 1, z) : Vec3(u, -1, z);
+        cells.push_back({glm::normalize(d), z * dAside / (kPi * r2 * r2)});
+      }
+  return cells;
+}
+
+// Sorts by j and adds up entries of the same j.
+void merge(std::vector<Entry>& row) {
+  std::sort(row.begin(), row.end(), [](const Entry& a, const Entry& b) { return a.j < b.j; });
+  size_t out = 0;
+  for (size_t k = 0; k < row.size(); ++k) {
+    if (out > 0 && row[out - 1].j == row[k].j)
+      row[out - 1].f += row[k].f;
+    else
+      row[out++] = row[k];
+  }
+  row.resize(out);
+}
+
+// A point on triangle (a, b, c) for the unit square sample u.
+Vec3 pointOnTriangle(const Vec3& a, const Vec3& b, const Vec3& c, Vec2 u) {
+  const float s = std::sqrt(u.x);
+  return (1.0f - s) * a + s * (1.0f - u.y) * b + s * u.y * c;
+}
+
+// Whether the segment from x (on patch i, normal ni) to y (on patch j, normal nj) is unobstructed.
+bool visible(const Accelerator& accel, const Vec3& x, const Vec3& ni, const Vec3& y, const Vec3& nj, QueryCounters& q) {
+  Ray r;
+  r.origin = offsetRayOrigin(x, ni);
+  const Vec3 target = offsetRayOrigin(y, faceTowards(nj, x - y));
+  r.dir = target - r.origin;
+  r.tmin = 0.0f;
+  r.tmax = 1.0f;
+  return !accel.occluded(r, q);
+}
+
+// Clips polygon `in` to the half-space n.(v - x) >= eps; returns the new count.
+int clipAbove(const Vec3& x, const Vec3& n, const Vec3* in, int count, Vec3* out, float eps) {
+  int m = 0;
+  for (int k = 0; k < count; ++k) {
+    const Vec3& a = in[k];
+    const Vec3& b = in[(k + 1) % count];
+    const float da = glm::dot(n, a - x) - eps, db = glm::dot(n, b - x) - eps;
+    if (da >= 0.0f) out[m++] = a;
+    if ((da >= 0.0f) != (db >= 0.0f)) out[m++] = a + (da / (da - db)) * (b - a);
+  }
+  return m;
+}
+
+std::vector<Entry> analyticRow(const PatchMesh& mesh, const Accelerator& accel, uint32_t i, int visSamples,
+                               QueryCounters& q, uint64_t& rays) {
+  const Patch& pi = mesh.patches[i];
+  std::vector<Entry> row;
+  const float eps = 1e-6f * (glm::length(pi.centre) + std::sqrt(pi.area));
+  for (uint32_t j = 0; j < mesh.patches.size(); ++j) {
+    if (j == i) continue;
+    const Patch& pj = mesh.patches[j];
+    if (glm::dot(pj.normal, pi.centre - pj.centre) <= 0.0f) continue;  // i is behind j's front side
+    const Vec3 tri[3] = {mesh.positions[pj.vertices.x], mesh.positions[pj.vertices.y], mesh.positions[pj.vertices.z]};
+    Vec3 clipped[4];
+    const int n = clipAbove(pi.centre, pi.normal, tri, 3, clipped, eps);
+    if (n < 3) continue;
+    const float f = pointToPolygonFormFactor(pi.centre, pi.normal, clipped, n);
+    if (!(f > 0.0f)) continue;
+    int seen = 0;
+    for (int s = 0; s < visSamples; ++s) {
+      // The centre first, then stratified points on j.
+      const Vec3 y = s == 0 ? pj.centre
+                            : pointOnTriangle(tri[0], tri[1], tri[2],
+                                              Vec2(std::fmod(0.618034f * static_cast<float>(s), 1.0f),
+                                                   (static_cast<float>(s) + 0.5f) / static_cast<float>(visSamples)));
+      seen += visible(accel, pi.centre, pi.normal, y, pj.normal, q) ? 1 : 0;
+      ++rays;
+    }
+    if (seen > 0) row.push_back({j, f * static_cast<float>(seen) / static_cast<float>(visSamples)});
+  }
+  return row;
+}
+
+std::vector<Entry> hemicubeRow(const PatchMesh& mesh, const Accelerator& accel, uint32_t i,
+                               const std::vector<HemicubeCell>& cells, QueryCounters& q, uint64_t& rays) {
+  const Patch& p = mesh.patches[i];
+  Vec3 t, b;
+  tangentFrame(p.normal, t, b);
+  std::vector<Entry> row;
+  Ray r;
+  r.origin = offsetRayOrigin(p.centre, p.normal);
+  r.tmin = 0.0f;
+  for (const HemicubeCell& c : cells) {
+    r.dir = c.dir.x * t + c.dir.y * b + c.dir.z * p.normal;
+    r.tmax = kInfinity;
+    Hit hit;
+    ++rays;
+    if (!accel.intersect(r, hit, q) || hit.prim == i) continue;
+    if (glm::dot(mesh.patches[hit.prim].normal, r.dir) >= 0.0f) continue;  // its back: patches receive in front
+    row.push_back({hit.prim, c.dF});
+  }
+  merge(row);
+  return row;
+}
+
+std::vector<Entry> monteCarloRow(const PatchMesh& mesh, const Accelerator& accel, uint32_t i, int samples,
+                                 uint64_t seed, QueryCounters& q, uint64_t& rays) {
+  const Patch& pi = mesh.patches[i];
+  const Vec3 ti[3] = {mesh.positions[pi.vertices.x], mesh.positions[pi.vertices.y], mesh.positions[pi.vertices.z]};
+  std::vector<Entry> row;
+  Rng rng(seed, i);
+  for (uint32_t j = 0; j < mesh.patches.size(); ++j) {
+    if (j == i) continue;
+    const Patch& pj = mesh.patches[j];
+    if (glm::dot(pj.normal, pi.centre - pj.centre) <= 0.0f && glm::dot(pi.normal, pj.centre - pi.centre) <= 0.0f)
+      continue;
+    const Vec3 tj[3] = {mesh.positions[pj.vertices.x], mesh.positions[pj.vertices.y], mesh.positions[pj.vertices.z]};
+    double sum = 0.0;
+    for (int s = 0; s < samples; ++s) {
+      const Vec3 x = pointOnTriangle(ti[0], ti[1], ti[2], Vec2(rng.uniform(), rng.uniform()));
+      const Vec3 y = pointOnTriangle(tj[0], tj[1], tj[2], Vec2(rng.uniform(), rng.uniform()));
+      const Vec3 d = y - x;
+      const float r2 = glm::dot(d, d);
+      if (!(r2 > 0.0f)) continue;
+      const float ci = glm::dot(pi.normal, d), cj = -glm::dot(pj.normal, d);
+      if (ci <= 0.0f || cj <= 0.0f) continue;
+      ++rays;
+      if (!visible(accel, x, pi.normal, y, pj.normal, q)) continue;
+      sum += static_cast<double>(ci * cj) / (static_cast<double>(kPi) * static_cast<double>(r2) * static_cast<double>(r2));
+    }
+    const double f = sum * static_cast<double>(pj.area) / samples;
+    if (f > 0.0) row.push_back({j, static_cast<float>(f)});
+  }
+  return row;
+}
+
+}  // namespace
+
+float FormFactors::at(uint32_t i, uint32_t j) const {
+  const auto begin = column.begin() + rowStart[i], end = column.begin() + rowStart[i + 1];
+  const auto it = std::lower_bound(begin, end, j);
+  return it != end && *it == j ? value[static_cast<size_t>(it - column.begin())] : 0.0f;
+}
+
+std::string methodName(FormFactorMethod m) {
+  return m == FormFactorMethod::Analytic ? "analytic" : m == FormFactorMethod::Hemicube ? "hemicube" : "montecarlo";
+}
+
+FormFactors computeFormFactors(const PatchMesh& mesh, const Accelerator& accel, const FormFactorSettings& s,
+                               FormFactorDiagnostics* diagnostics, const std::function<void(size_t, size_t)>& progress) {
+  const size_t n = mesh.patches.size();
+  std::vector<std::vector<Entry>> rows(n);
+  const std::vector<HemicubeCell> cells =
+      s.method == FormFactorMethod::Hemicube ? hemicube(std::max(s.hemicubeResolution, 2)) : std::vector<HemicubeCell>{};
+  std::atomic<uint64_t> rays{0};
+  std::atomic<size_t> done{0};
+  TaskLog* log = currentTaskLog();  // where the A5.1 stub reports, on every worker
+  tbb::parallel_for(tbb::blocked_range<uint32_t>(0, static_cast<uint32_t>(n), 16),
+                    [&](const tbb::blocked_range<uint32_t>& range) {
+                      const ScopedTaskLog scope(log);
+                      QueryCounters q;
+                      uint64_t local = 0;
+                      for (uint32_t i = range.begin(); i < range.end(); ++i) {
+                        switch (s.method) {
+                          case FormFactorMethod::Analytic:
+                            rows[i] = analyticRow(mesh, accel, i, std::max(s.visibilitySamples, 1), q, local);
+                            break;
+                          case FormFactorMethod::Hemicube:
+                            rows[i] = hemicubeRow(mesh, accel, i, cells, q, local);
+                            break;
+                          case FormFactorMethod::MonteCarlo:
+                            rows[i] = monteCarloRow(mesh, accel, i, std::max(s.monteCarloSamples, 1), s.seed, q, local);
+                            break;
+                        }
+                      }
+                      rays += local;
+                      const size_t finished = done += range.size();
+                      if (progress) progress(finished, n);
+                    });
+  FormFactors f;
+  f.rowStart.assign(n + 1, 0);
+  for (size_t i = 0; i < n; ++i) f.rowStart[i + 1] = f.rowStart[i] + static_cast<uint32_t>(rows[i].size());
+  f.column.resize(f.rowStart[n]);
+  f.value.resize(f.rowStart[n]);
+  for (size_t i = 0; i < n; ++i)
+    for (size_t k = 0; k < rows[i].size(); ++k) {
+      f.column[f.rowStart[i] + k] = rows[i][k].j;
+      f.value[f.rowStart[i] + k] = rows[i][k].f;
+    }
+  if (diagnostics) {
+    FormFactorDiagnostics& d = *diagnostics;
+    d = {};
+    d.nonZeros = f.column.size();
+    d.visibilityRays = rays.load();
+    d.rowSumMin = n > 0 ? 1e30 : 0.0;
+    double exchanged = 0.0;
+    for (uint32_t i = 0; i < n; ++i) {
+      double sum = 0.0;
+      for (uint32_t k = f.rowStart[i]; k < f.rowStart[i + 1]; ++k) {
+        sum += static_cast<double>(f.value[k]);
+        const uint32_t j = f.column[k];
+        const double aij = static_cast<double>(mesh.patches[i].area) * static_cast<double>(f.value[k]);
+        const double aji = static_cast<double>(mesh.patches[j].area) * static_cast<double>(f.at(j, i));
+        d.reciprocityMeanError += std::abs(aij - aji);
+        exchanged += aij;
+        if (std::max(f.value[k], f.at(j, i)) > 1e-2f)
+          d.reciprocityMaxError = std::max(d.reciprocityMaxError, std::abs(aij - aji) / std::max(aij, aji));
+      }
+      d.rowSumMin = std::min(d.rowSumMin, sum);
+      d.rowSumMax = std::max(d.rowSumMax, sum);
+      d.rowSumMean += sum;
+    }
+    if (n > 0) d.rowSumMean /= static_cast<double>(n);
+    if (exchanged > 0.0) d.reciprocityMeanError /= exchanged;
+  }
+  return f;
+}
+
+double parallelSquaresFormFactor(double a, double h) {
+  const double x = a / h, y = a / h;
+  const double x2 = x * x, y2 = y * y;
+  return 2.0 / (std::numbers::pi * x * y) *
+         (std::log(std::sqrt((1 + x2) * (1 + y2) / (1 + x2 + y2))) + x * std::sqrt(1 + y2) * std::atan(x / std::sqrt(1 + y2)) +
+          y * std::sqrt(1 + x2) * std::atan(y / std::sqrt(1 + x2)) - x * std::atan(x) - y * std::atan(y));
+}
+
+double perpendicularRectanglesFormFactor(double l, double w1, double w2) {
+  const double w = w1 / l, h = w2 / l;
+  const double w2_ = w * w, h2 = h * h, s = std::sqrt(h2 + w2_);
+  const double a = (1 + w2_) * (1 + h2) / (1 + w2_ + h2);
+  const double b = std::pow(w2_ * (1 + w2_ + h2) / ((1 + w2_) * (w2_ + h2)), w2_);
+  const double c = std::pow(h2 * (1 + h2 + w2_) / ((1 + h2) * (h2 + w2_)), h2);
+  return 1.0 / (std::numbers::pi * w) *
+         (w * std::atan(1 / w) + h * std::atan(1 / h) - s * std::atan(1 / s) + 0.25 * std::log(a * b * c));
+}
+
+}  // namespace ll::a5

@@ -1,0 +1,68 @@
+// Form factors F_ij -- the fraction of the power leaving patch i (diffusely,
+// from its front side) that arrives at patch j -- stored as a sparse matrix,
+// by three methods (framework code around task A5.1):
+//   analytic:    the point-to-polygon form factor (Lambert's contour
+//                integral, A5.1) from i's centre to j clipped to i's front
+//                half-space, times the fraction of visibility rays from
+//                i's centre to points on j that arrive;
+//   hemicube:    a hemicube of res x res cells on the top face around i's
+//                centre, each cell's delta form factor given to the patch its
+//                centre ray hits first (cast through the accelerator);
+//   montecarlo:  area-to-area: N random point pairs (x on i, y on j),
+//                F_ij = A_j/N sum cos_i cos_j V(x, y) / (pi r^2).
+// Every visibility test goes through `accel` (built over mesh.geometry).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "accel/accelerator.h"
+#include "patch_mesh.h"
+
+namespace ll::a5 {
+
+enum class FormFactorMethod { Analytic, Hemicube, MonteCarlo };
+
+struct FormFactorSettings {
+  FormFactorMethod method = FormFactorMethod::Hemicube;
+  int hemicubeResolution = 32;  // cells along the top face's side
+  int visibilitySamples = 1;    // analytic: rays from i's centre to points on j
+  int monteCarloSamples = 16;   // montecarlo: point pairs per patch pair
+  uint64_t seed = 0;
+};
+
+// Row i: the patches j with F_ij > 0 and their F_ij (sorted by j).
+struct FormFactors {
+  std::vector<uint32_t> rowStart;  // size N + 1
+  std::vector<uint32_t> column;
+  std::vector<float> value;
+  size_t size() const { return rowStart.empty() ? 0 : rowStart.size() - 1; }
+  float at(uint32_t i, uint32_t j) const;  // 0 where not stored
+};
+
+// Checks of a computed matrix: each row sums to at most 1 (exactly 1 in a
+// closed scene), and A_i F_ij = A_j F_ji (reciprocity).
+struct FormFactorDiagnostics {
+  double rowSumMin = 0.0, rowSumMean = 0.0, rowSumMax = 0.0;
+  double reciprocityMeanError = 0.0;  // sum |A_i F_ij - A_j F_ji| / sum A_i F_ij (weighted by what is exchanged)
+  double reciprocityMaxError = 0.0;   // max of |A_i F_ij - A_j F_ji| / max(A_i F_ij, A_j F_ji) where F_ij or F_ji > 0.01
+  size_t nonZeros = 0;
+  uint64_t visibilityRays = 0;
+};
+
+// `progress(done, total)` (may be empty) is called from worker threads as rows finish.
+FormFactors computeFormFactors(const PatchMesh& mesh, const Accelerator& accel, const FormFactorSettings& settings,
+                               FormFactorDiagnostics* diagnostics = nullptr,
+                               const std::function<void(size_t, size_t)>& progress = {});
+
+// The closed form for two parallel coaxial squares of side a at distance h
+// (Hottel), and for perpendicular rectangles sharing an edge, for tests and
+// slides. F from the first to the second.
+double parallelSquaresFormFactor(double a, double h);
+double perpendicularRectanglesFormFactor(double sharedEdge, double width1, double width2);
+
+std::string methodName(FormFactorMethod m);
+
+}  // namespace ll::a5

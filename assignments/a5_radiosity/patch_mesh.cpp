@@ -1,0 +1,134 @@
+#include "patch_mesh.h"
+
+#include <algorithm>
+#include <map>
+
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+
+namespace ll::a5 {
+
+namespace {
+
+using OmMesh = OpenMesh::TriMesh_ArrayKernelT<>;
+
+OmMesh::Point toOm(const Vec3& v) { return {v.x, v.y, v.z}; }
+Vec3 fromOm(const OmMesh::Point& p) { return {p[0], p[1], p[2]}; }
+
+// One object's triangles as an OpenMesh mesh. Triangles OpenMesh refuses
+// (non-manifold fans) are added with vertices of their own.
+void addObjectTriangles(const Scene& scene, const SceneObject& object, int sphereSegments, OmMesh& mesh) {
+  const Geometry& g = scene.geometry;
+  std::map<uint32_t, OmMesh::VertexHandle> vertexOf;
+  const auto handle = [&](uint32_t index) {
+    auto it = vertexOf.find(index);
+    if (it == vertexOf.end()) it = vertexOf.emplace(index, mesh.add_vertex(toOm(g.positions[index]))).first;
+    return it->second;
+  };
+  const auto addTriangle = [&](OmMesh::VertexHandle a, OmMesh::VertexHandle b, OmMesh::VertexHandle c) {
+    if (mesh.add_face(a, b, c).is_valid()) return;
+    mesh.add_face(mesh.add_vertex(mesh.point(a)), mesh.add_vertex(mesh.point(b)), mesh.add_vertex(mesh.point(c)));
+  };
+  for (uint32_t prim = object.firstPrim; prim < object.firstPrim + object.primCount; ++prim) {
+    if (g.isTriangle(prim)) {
+      const glm::uvec3& t = g.triangles[prim];
+      if (glm::length(glm::cross(g.positions[t.y] - g.positions[t.x], g.positions[t.z] - g.positions[t.x])) <= 0.0f)
+        continue;  // degenerate: no area, no patch
+      addTriangle(handle(t.x), handle(t.y), handle(t.z));
+      continue;
+    }
+    // A sphere: a latitude-longitude grid with shared vertices, poles included.
+    const Sphere& s = g.spheres[prim - g.triangleCount()];
+    const int segments = std::max(sphereSegments, 6), rings = std::max(segments / 2, 3);
+    std::vector<OmMesh::VertexHandle> grid;
+    const OmMesh::VertexHandle south = mesh.add_vertex(toOm(s.center - Vec3(0, s.radius, 0)));
+    const OmMesh::VertexHandle north = mesh.add_vertex(toOm(s.center + Vec3(0, s.radius, 0)));
+    for (int j = 1; j < rings; ++j)
+      for (int i = 0; i < segments; ++i) {
+        const float theta = kPi * static_cast<float>(j) / static_cast<float>(rings) - kPi / 2;
+        const float phi = 2.0f * kPi * static_cast<float>(i) / static_cast<float>(segments);
+        grid.push_back(mesh.add_vertex(
+            toOm(s.center + s.radius * Vec3(std::cos(theta) * std::cos(phi), std::sin(theta),
+                                            std::cos(theta) * std::sin(phi)))));
+      }
+    const auto at = [&](int i, int j) { return grid[static_cast<size_t>((j - 1) * segments + (i % segments))]; };
+    for (int i = 0; i < segments; ++i) {  // outward winding (counter-clockwise seen from outside)
+      addTriangle(south, at(i, 1), at(i + 1, 1));
+      addTriangle(north, at(i + 1, rings - 1), at(i, rings - 1));
+      for (int j = 1; j + 1 < rings; ++j) {
+        addTriangle(at(i, j), at(i, j + 1), at(i + 1, j + 1));
+        addTriangle(at(i, j), at(i + 1, j + 1), at(i + 1, j));
+      }
+    }
+  }
+}
+
+// Splits every edge longer than maxEdge at its midpoint, longest first, until none is.
+void splitLongEdges(OmMesh& mesh, float maxEdge) {
+  for (int round = 0; round < 64; ++round) {
+    std::vector<std::pair<float, OmMesh::EdgeHandle>> longEdges;
+    for (const auto e : mesh.edges()) {
+      const float length = mesh.calc_edge_length(e);
+      if (length > maxEdge) longEdges.emplace_back(length, e);
+    }
+    if (longEdges.empty()) return;
+    std::sort(longEdges.begin(), longEdges.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    for (const auto& [length, e] : longEdges) {
+      if (mesh.calc_edge_length(e) <= maxEdge) continue;  // (lengths do not change, but keep it safe)
+      const auto h = mesh.halfedge_handle(e, 0);
+      const OmMesh::Point mid = 0.5f * (mesh.point(mesh.from_vertex_handle(h)) + mesh.point(mesh.to_vertex_handle(h)));
+      mesh.split(e, mid);
+    }
+  }
+}
+
+}  // namespace
+
+float PatchMesh::totalArea() const {
+  float a = 0.0f;
+  for (const Patch& p : patches) a += p.area;
+  return a;
+}
+
+PatchMesh buildPatchMesh(const Scene& scene, float maxEdge, int sphereSegments) {
+  PatchMesh out;
+  for (uint32_t o = 0; o < scene.objects.size(); ++o) {
+    const SceneObject& object = scene.objects[o];
+    const Material& m = scene.materials[object.material];
+    OmMesh mesh;
+    addObjectTriangles(scene, object, sphereSegments, mesh);
+    splitLongEdges(mesh, maxEdge);
+    const auto base = static_cast<uint32_t>(out.positions.size());
+    for (const auto v : mesh.vertices()) out.positions.push_back(fromOm(mesh.point(v)));
+    for (const auto f : mesh.faces()) {
+      glm::uvec3 idx;
+      int k = 0;
+      for (const auto v : mesh.fv_range(f)) idx[k++] = base + static_cast<uint32_t>(v.idx());
+      Patch p;
+      p.object = o;
+      p.vertices = idx;
+      const Vec3 a = out.positions[idx.x], b = out.positions[idx.y], c = out.positions[idx.z];
+      const Vec3 cross = glm::cross(b - a, c - a);
+      p.area = 0.5f * glm::length(cross);
+      if (!(p.area > 0.0f)) continue;
+      p.normal = cross / (2.0f * p.area);
+      p.centre = (a + b + c) / 3.0f;
+      p.emission = kPi * m.emission;
+      p.reflectance = glm::clamp(m.kd, Rgb(0.0f), Rgb(1.0f));
+      if (m.texture.kind != Texture::Kind::None) p.reflectance = glm::clamp(m.diffuse(Vec2(0.5f)), Rgb(0.0f), Rgb(1.0f));
+      out.patches.push_back(p);
+    }
+  }
+  // The Geometry view and the vertex -> patches table.
+  Geometry& g = out.geometry;
+  g.positions = out.positions;
+  out.vertexPatches.assign(out.positions.size(), {});
+  for (uint32_t i = 0; i < out.patches.size(); ++i) {
+    const Patch& p = out.patches[i];
+    g.triangles.push_back(p.vertices);
+    g.triangleObject.push_back(p.object);
+    for (int k = 0; k < 3; ++k) out.vertexPatches[p.vertices[k]].push_back(i);
+  }
+  return out;
+}
+
+}  // namespace ll::a5

@@ -1,0 +1,45 @@
+// The scene as small flat diffuse patches for radiosity (framework code):
+// every object's triangles (spheres tessellated first) are split with
+// OpenMesh at the midpoints of their longest edges until no edge is longer
+// than `maxEdge`. Splitting an edge splits both triangles on it, so the mesh
+// stays conforming (no T-junctions) and vertex radiosities interpolate
+// without cracks. Patch ids are stable: objects in scene order, each
+// object's faces in OpenMesh's order.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/math.h"
+#include "scene/geometry.h"
+#include "scene/scene.h"
+
+namespace ll::a5 {
+
+struct Patch {
+  uint32_t object = 0;   // the scene object it belongs to
+  glm::uvec3 vertices;   // indices into PatchMesh::positions (counter-clockwise seen from the front)
+  Vec3 centre{0.0f};     // centroid, world space
+  Vec3 normal{0.0f};     // unit, the front side (the winding's)
+  float area = 0.0f;     // scene units^2
+  Rgb emission{0.0f};    // E = pi * Le: emitted radiosity (front side), W/m^2 in scene units
+  Rgb reflectance{0.0f}; // rho = the material's kd at the centre (diffuse albedo)
+};
+
+struct PatchMesh {
+  std::vector<Vec3> positions;  // shared by the patches of one object
+  std::vector<Patch> patches;
+  // The patches as a Geometry (one triangle per patch, primitive id = patch
+  // id), for accelerators: visibility rays and display.
+  Geometry geometry;
+  // Per vertex: the patches around it (for interpolated vertex radiosities).
+  std::vector<std::vector<uint32_t>> vertexPatches;
+  float totalArea() const;
+};
+
+// Meshes `scene` into patches no longer than maxEdge (scene units) along any
+// edge; spheres become `sphereSegments` x segments/2 quads first.
+// Precondition: maxEdge > 0.
+PatchMesh buildPatchMesh(const Scene& scene, float maxEdge, int sphereSegments = 24);
+
+}  // namespace ll::a5

@@ -1,0 +1,36 @@
+// A5.1 Point-to-polygon form factor (the contour integral).
+#include "a5_tasks.h"
+#include "render/student_task.h"
+
+namespace ll::a5 {
+
+float pointToPolygonFormFactor(Vec3 x, Vec3 n, const Vec3* vertices, int count) {
+#if LIGHTLAB_SOLUTION  // A5.1
+  double sum = 0.0;
+  for (int k = 0; k < count; ++k) {
+    const glm::dvec3 a = glm::dvec3(vertices[k] - x), b = glm::dvec3(vertices[(k + 1) % count] - x);
+    const glm::dvec3 c = glm::cross(a, b);
+    const double lc = glm::length(c);
+    if (!(lc > 0.0)) continue;  // an edge pointing at x: no contribution
+    const double beta = std::atan2(lc, glm::dot(a, b));  // the angle between a and b, stable near 0 and pi
+    sum += beta * glm::dot(glm::dvec3(n), c) / lc;
+  }
+  return static_cast<float>(std::abs(sum) / (2.0 * static_cast<double>(kPi)));
+#else
+  LIGHTLAB_TODO("A5.1", "point-to-polygon form factor (assignments/a5_radiosity/point_polygon.cpp)");
+  // Stand-in: the polygon as one small patch at its centroid, cos cos A / (pi r^2): wrong up close.
+  Vec3 c(0.0f), cross(0.0f);
+  for (int k = 0; k < count; ++k) {
+    c += vertices[k] / static_cast<float>(count);
+    cross += glm::cross(vertices[k], vertices[(k + 1) % count]);
+  }
+  const float area = 0.5f * glm::length(cross);
+  const Vec3 d = c - x;
+  const float r2 = glm::dot(d, d);
+  if (!(r2 > 0.0f) || !(area > 0.0f)) return 0.0f;
+  const float cosX = glm::dot(n, d) / std::sqrt(r2), cosY = std::abs(glm::dot(cross / (2.0f * area), d)) / std::sqrt(r2);
+  return std::clamp(std::max(0.0f, cosX) * cosY * area / (kPi * r2), 0.0f, 1.0f);
+#endif
+}
+
+}  // namespace ll::a5

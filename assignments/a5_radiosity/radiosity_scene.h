@@ -1,0 +1,51 @@
+// A scene prepared for radiosity and solved (framework code): the patch
+// mesh, an accelerator over the patches, the form factors with their
+// diagnostics, and the solution -- everything the display, the command line
+// and the tests read. Solving is independent of the camera, so the result is
+// cached: moving the camera never recomputes it; changing the scene's
+// geometry or materials, the meshing, the form factors or the solver does.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+
+#include "core/params.h"
+#include "form_factors.h"
+#include "radiosity_solver.h"
+
+namespace ll::a5 {
+
+struct RadiositySettings {
+  float patchSize = 0.04f;  // longest patch edge, as a fraction of the scene's bounding-box diagonal
+  int sphereSegments = 24;
+  std::string accelerator = "bvh";  // for the visibility rays (and the display)
+  FormFactorSettings formFactors;
+  SolverSettings solver;
+  // What the display shows: the solution, bounce k alone (E, K E, K^2 E, ...), or bounces 0..k summed.
+  enum class Show { Solution, Bounce, Bounces } show = Show::Solution;
+  int bounce = 1;
+  bool quiet = true;  // progress bars on the terminal
+};
+
+// Reads the technique's parameters (see radiosity_technique.cpp).
+RadiositySettings radiositySettings(const ParamSet& params);
+
+struct SolvedRadiosity {
+  PatchMesh mesh;
+  std::unique_ptr<Accelerator> accel;  // over mesh.geometry
+  FormFactors f;
+  FormFactorDiagnostics diagnostics;
+  Solution solution;
+  std::vector<Rgb> shown;       // per patch: the radiosity displayed (solution + ambient, or bounces)
+  std::vector<Rgb> vertexShown; // per mesh vertex: area-weighted mean of its patches' `shown`
+  EnergyBalance energy;
+  double meshSeconds = 0.0, accelSeconds = 0.0, formFactorSeconds = 0.0;
+  std::map<std::string, std::string> missingTasks;  // student stubs that ran (A5.x)
+  RadiositySystem system() const { return {mesh.patches, f}; }
+};
+
+// Solves `scene` (cached by the scene's content and the settings).
+std::shared_ptr<const SolvedRadiosity> solveScene(const Scene& scene, const RadiositySettings& settings);
+
+}  // namespace ll::a5

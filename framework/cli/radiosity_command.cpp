@@ -1,0 +1,147 @@
+// lightlab radiosity SCENE [--json OUT.json] [--plot OUT.svg] [--set name=value ...]
+// Meshes the scene into patches, computes the form factors and solves
+// B = E + rho F B (the technique `radiosity`'s parameters choose how), then
+// prints a summary: patches, times, form-factor diagnostics (row sums,
+// reciprocity), the solver's iterations and residual, the energy balance.
+// --json writes every patch and the solver's history; --plot draws the
+// residual history (log scale) as an SVG.
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/commands.h"
+#include "cli/scene_setup.h"
+#include "core/error.h"
+#include "radiosity_scene.h"
+
+namespace ll::cli {
+
+namespace {
+
+struct RadiosityOptions {
+  std::string scene, json, plot;
+  std::vector<std::string> sets;
+};
+
+nlohmann::json vec(const Vec3& v) { return {v.x, v.y, v.z}; }
+
+// The residual history as a small SVG plot: log10(residual) against iteration.
+void writePlot(const a5::Solution& s, const std::string& title, const std::string& path) {
+  std::ofstream out(path);
+  if (!out) throwUserError(path + ": cannot write the plot");
+  constexpr double w = 640, h = 400, left = 70, right = 20, top = 40, bottom = 50;
+  double lo = 0.0, hi = 0.0;
+  int last = 1;
+  bool first = true;
+  for (const a5::SolverStep& step : s.history) {
+    if (!(step.residual > 0.0)) continue;
+    const double l = std::log10(step.residual);
+    lo = first ? l : std::min(lo, l);
+    hi = first ? l : std::max(hi, l);
+    first = false;
+    last = std::max(last, step.iteration);
+  }
+  lo = std::floor(lo);
+  hi = std::max(std::ceil(hi), lo + 1.0);
+  const auto x = [&](double it) { return left + (w - left - right) * it / last; };
+  const auto y = [&](double l) { return top + (h - top - bottom) * (hi - l) / (hi - lo); };
+  out << "<svg xmlns='http://www.w3.org/2000/svg' width='" << w << "' height='" << h
+      << "' font-family='sans-serif' font-size='12'>\n<rect width='100%' height='100%' fill='white'/>\n"
+      << "<text x='" << left << "' y='24' font-size='14'>" << title << "</text>\n";
+  for (double l = lo; l <= hi; l += 1.0)
+    out << "<line x1='" << left << "' x2='" << w - right << "' y1='" << y(l) << "' y2='" << y(l)
+        << "' stroke='#ddd'/><text x='" << left - 8 << "' y='" << y(l) + 4 << "' text-anchor='end'>1e" << l
+        << "</text>\n";
+  out << "<text x='" << (left + w - right) / 2 << "' y='" << h - 12 << "' text-anchor='middle'>iteration (of "
+      << last << ")</text>\n<text x='16' y='" << (top + h - bottom) / 2 << "' transform='rotate(-90 16 "
+      << (top + h - bottom) / 2 << ")' text-anchor='middle'>relative residual</text>\n<polyline fill='none' "
+      << "stroke='#c0392b' stroke-width='2' points='";
+  for (const a5::SolverStep& step : s.history)
+    if (step.residual > 0.0) out << x(step.iteration) << "," << y(std::log10(step.residual)) << " ";
+  out << "'/>\n</svg>\n";
+}
+
+}  // namespace
+
+Command addRadiosityCommand(CLI::App& app, const GlobalOptions& global) {
+  auto o = std::make_shared<RadiosityOptions>();
+  CLI::App* cmd = app.add_subcommand("radiosity", "Solve a scene's radiosity: patches, form factors, B = E + rho F B");
+  cmd->add_option("scene", o->scene, "Scene file (.json or .obj)")->required();
+  cmd->add_option("--json", o->json, "Write every patch and the solver's history as JSON");
+  cmd->add_option("--plot", o->plot, "Write the residual history as an SVG plot");
+  cmd->add_option("--set", o->sets, "Parameter of the technique radiosity, name=value (repeatable)");
+  return [o, &global]() {
+    SceneSetup s = setUpScene(o->scene, "radiosity", "none", o->sets);
+    a5::RadiositySettings settings = a5::radiositySettings(s.techniqueParams);
+    settings.quiet = global.quiet;
+    const auto solved = a5::solveScene(s.scene, settings);
+    for (const auto& [id, what] : solved->missingTasks)
+      std::fprintf(stderr, "lightlab: %s not implemented: %s -- a stand-in was used\n", id.c_str(), what.c_str());
+    const a5::Solution& sol = solved->solution;
+    const a5::FormFactorDiagnostics& d = solved->diagnostics;
+    const double finalResidual = sol.history.empty() ? 0.0 : sol.history.back().residual;
+    const int iterations = sol.history.empty() ? 0 : sol.history.back().iteration;
+    std::printf("%zu patches (%.3f s), form factors %s: %zu non-zeros, %.3f s, row sums %.4f..%.4f (mean %.4f), "
+                "reciprocity error mean %.2g max %.2g\n",
+                solved->mesh.patches.size(), solved->meshSeconds, a5::methodName(settings.formFactors.method).c_str(),
+                d.nonZeros, solved->formFactorSeconds, d.rowSumMin, d.rowSumMax, d.rowSumMean, d.reciprocityMeanError,
+                d.reciprocityMaxError);
+    std::printf("solver %s: %s after %d iterations, residual %.3g, %.3f s; power emitted %.4g, absorbed %.4g, "
+                "escaped %.4g\n",
+                a5::methodName(settings.solver.method).c_str(), sol.converged ? "converged" : "NOT converged",
+                iterations, finalResidual, sol.seconds, solved->energy.emitted, solved->energy.absorbed,
+                solved->energy.escaped);
+    if (!o->plot.empty()) {
+      writePlot(sol, "radiosity: " + a5::methodName(settings.solver.method) + ", " +
+                         std::to_string(solved->mesh.patches.size()) + " patches", o->plot);
+      std::printf("wrote %s\n", o->plot.c_str());
+    }
+    if (o->json.empty()) return;
+    nlohmann::json patches = nlohmann::json::array();
+    for (size_t i = 0; i < solved->mesh.patches.size(); ++i) {
+      const a5::Patch& p = solved->mesh.patches[i];
+      patches.push_back({{"id", i},
+                         {"object", s.scene.objects[p.object].name},
+                         {"object_id", p.object},
+                         {"area", p.area},
+                         {"centre", vec(p.centre)},
+                         {"normal", vec(p.normal)},
+                         {"emission", vec(p.emission)},
+                         {"reflectance", vec(p.reflectance)},
+                         {"radiosity", vec(sol.radiosity[i])}});
+    }
+    nlohmann::json history = nlohmann::json::array();
+    for (const a5::SolverStep& step : sol.history)
+      history.push_back({{"iteration", step.iteration}, {"residual", step.residual}, {"seconds", step.seconds}});
+    const nlohmann::json out = {
+        {"scene", o->scene},
+        {"parameters", s.techniqueParams.toJson()},
+        {"mesh", {{"patches", solved->mesh.patches.size()}, {"seconds", solved->meshSeconds}}},
+        {"form_factors",
+         {{"method", a5::methodName(settings.formFactors.method)},
+          {"seconds", solved->formFactorSeconds},
+          {"non_zeros", d.nonZeros},
+          {"visibility_rays", d.visibilityRays},
+          {"row_sum", {{"min", d.rowSumMin}, {"mean", d.rowSumMean}, {"max", d.rowSumMax}}},
+          {"reciprocity_error", {{"mean", d.reciprocityMeanError}, {"max", d.reciprocityMaxError}}}}},
+        {"solver",
+         {{"method", a5::methodName(settings.solver.method)},
+          {"converged", sol.converged},
+          {"iterations", iterations},
+          {"residual", finalResidual},
+          {"seconds", sol.seconds},
+          {"history", history}}},
+        {"energy",
+         {{"emitted", solved->energy.emitted}, {"absorbed", solved->energy.absorbed}, {"escaped", solved->energy.escaped}}},
+        {"missing_tasks", solved->missingTasks},
+        {"patches", patches}};
+    std::ofstream file(o->json);
+    if (!file) throwUserError(o->json + ": cannot write");
+    file << out.dump(1) << "\n";
+    std::printf("wrote %s\n", o->json.c_str());
+  };
+}
+
+}  // namespace ll::cli
