@@ -97,12 +97,12 @@ std::string parallelSquares(float scale) {
 // F from object a to object b: sum over patch pairs of A_i F_ij / A_a.
 double objectFormFactor(const a5::SolvedRadiosity& s, uint32_t from, uint32_t to) {
   double flux = 0.0, area = 0.0;
-  for (uint32_t i = 0; i < s.mesh.patches.size(); ++i) {
-    if (s.mesh.patches[i].object != from) continue;
-    area += static_cast<double>(s.mesh.patches[i].area);
-    for (uint32_t k = s.f.rowStart[i]; k < s.f.rowStart[i + 1]; ++k)
-      if (s.mesh.patches[s.f.column[k]].object == to)
-        flux += static_cast<double>(s.mesh.patches[i].area) * static_cast<double>(s.f.value[k]);
+  for (uint32_t i = 0; i < s.mesh().patches.size(); ++i) {
+    if (s.mesh().patches[i].object != from) continue;
+    area += static_cast<double>(s.mesh().patches[i].area);
+    for (uint32_t k = s.f().rowStart[i]; k < s.f().rowStart[i + 1]; ++k)
+      if (s.mesh().patches[s.f().column[k]].object == to)
+        flux += static_cast<double>(s.mesh().patches[i].area) * static_cast<double>(s.f().value[k]);
   }
   return flux / area;
 }
@@ -127,11 +127,11 @@ TEST(A5_FormFactors, ThreeMethodsOnParallelSquaresWithReciprocity) {
                         Case{a5::FormFactorMethod::MonteCarlo, 1e-2, 0.5}}) {
     const auto s = a5::solveScene(scene, settingsFor(c.method, 0.06f));
     SCOPED_TRACE(a5::methodName(c.method));
-    EXPECT_GT(s->mesh.patches.size(), 200u);
+    EXPECT_GT(s->mesh().patches.size(), 200u);
     EXPECT_NEAR(objectFormFactor(*s, 0, 1), 0.19982, c.tolerance);
     EXPECT_NEAR(objectFormFactor(*s, 1, 0), 0.19982, c.tolerance);
-    EXPECT_LE(s->diagnostics.rowSumMax, 1.0 + 1e-3);
-    EXPECT_LT(s->diagnostics.reciprocityMeanError, c.reciprocity);
+    EXPECT_LE(s->diagnostics().rowSumMax, 1.0 + 1e-3);
+    EXPECT_LT(s->diagnostics().reciprocityMeanError, c.reciprocity);
   }
 }
 
@@ -164,8 +164,8 @@ TEST(A5_FormFactors, EveryRowOfAClosedCubeSumsToOne) {
   for (const auto method : {a5::FormFactorMethod::Analytic, a5::FormFactorMethod::Hemicube}) {
     const auto s = a5::solveScene(scene, settingsFor(method, 0.15f));
     SCOPED_TRACE(a5::methodName(method));
-    EXPECT_NEAR(s->diagnostics.rowSumMin, 1.0, 2e-3);
-    EXPECT_NEAR(s->diagnostics.rowSumMax, 1.0, 2e-3);
+    EXPECT_NEAR(s->diagnostics().rowSumMin, 1.0, 2e-3);
+    EXPECT_NEAR(s->diagnostics().rowSumMax, 1.0, 2e-3);
     // Face to face: opposite faces 0.19982, each adjacent face 0.20004 (4 of them): 0.19982 + 4 * 0.20004 = 1.
     EXPECT_NEAR(objectFormFactor(*s, 0, 1), 0.19982, 5e-3);
     EXPECT_NEAR(objectFormFactor(*s, 0, 2), 0.20004, 5e-3);
@@ -202,7 +202,7 @@ TEST(A5_Solvers, AllSolversAgreeWithTheDirectSolveOnTheCornellBox) {
   r.formFactors.hemicubeResolution = 16;
   r.solver.method = a5::SolverMethod::Direct;
   const auto direct = a5::solveScene(scene, r);
-  ASSERT_GT(direct->mesh.patches.size(), 300u);
+  ASSERT_GT(direct->mesh().patches.size(), 300u);
   for (const auto method : {a5::SolverMethod::Jacobi, a5::SolverMethod::GaussSeidel, a5::SolverMethod::Southwell}) {
     r.solver.method = method;
     r.solver.tolerance = 1e-5;
@@ -235,7 +235,7 @@ TEST(A5_Solvers, TheBouncesSumToTheSolution) {
   r.solver.method = a5::SolverMethod::Direct;
   const auto s = a5::solveScene(scene, r);
   const a5::RadiositySystem system = s->system();
-  std::vector<Rgb> sum(s->mesh.patches.size(), Rgb(0.0f));
+  std::vector<Rgb> sum(s->mesh().patches.size(), Rgb(0.0f));
   for (int k = 0; k < 40; ++k) {
     const std::vector<Rgb> term = a5::bounce(system, k);
     if (k == 1) {  // rho * (sum F) * E: one bounce of E

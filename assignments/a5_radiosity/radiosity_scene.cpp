@@ -50,19 +50,22 @@ uint64_t fingerprint(const Scene& s) {
   return h;
 }
 
-std::string key(const Scene& s, const RadiositySettings& r) {
+std::string patchKey(const Scene& s, const RadiositySettings& r) {
   const FormFactorSettings& f = r.formFactors;
-  const SolverSettings& v = r.solver;
   return std::to_string(fingerprint(s)) + "|" + std::to_string(r.patchSize) + "|" + std::to_string(r.sphereSegments) +
          "|" + r.accelerator + "|" + methodName(f.method) + "|" + std::to_string(f.hemicubeResolution) + "|" +
-         std::to_string(f.visibilitySamples) + "|" + std::to_string(f.monteCarloSamples) + "|" + methodName(v.method) +
-         "|" + std::to_string(v.tolerance) + "|" + std::to_string(v.maxIterations) + "|" +
-         std::to_string(static_cast<int>(r.show)) + "|" + std::to_string(r.bounce);
+         std::to_string(f.visibilitySamples) + "|" + std::to_string(f.monteCarloSamples);
 }
 
-std::shared_ptr<const SolvedRadiosity> compute(const Scene& scene, const RadiositySettings& r) {
-  auto out = std::make_shared<SolvedRadiosity>();
-  TaskLog log;  // catches the A5.x stubs
+std::string solveKey(const std::string& patches, const RadiositySettings& r) {
+  const SolverSettings& v = r.solver;
+  return patches + "|" + methodName(v.method) + "|" + std::to_string(v.tolerance) + "|" +
+         std::to_string(v.maxIterations) + "|" + std::to_string(static_cast<int>(r.show)) + "|" + std::to_string(r.bounce);
+}
+
+std::shared_ptr<const PatchScene> computePatches(const Scene& scene, const RadiositySettings& r) {
+  auto out = std::make_shared<PatchScene>();
+  TaskLog log;  // catches the A5.1 stub
   const ScopedTaskLog scope(&log);
   auto t = std::chrono::steady_clock::now();
   out->mesh = buildPatchMesh(scene, r.patchSize * scene.geometry.sceneBounds().diagonal(), r.sphereSegments);
@@ -81,21 +84,33 @@ std::shared_ptr<const SolvedRadiosity> compute(const Scene& scene, const Radiosi
                                 [&](size_t done, size_t) { bar.update(static_cast<double>(done)); });
   }
   out->formFactorSeconds = since(t);
+  out->missingTasks = log.missing();
+  return out;
+}
+
+std::shared_ptr<const SolvedRadiosity> computeSolution(std::shared_ptr<const PatchScene> patches,
+                                                       const RadiositySettings& r) {
+  auto out = std::make_shared<SolvedRadiosity>();
+  out->patches = std::move(patches);
+  TaskLog log;  // catches the A5.2 / A5.3 stubs
+  const ScopedTaskLog scope(&log);
   const RadiositySystem system = out->system();
   {
     ProgressBar bar("radiosity (" + methodName(r.solver.method) + ")", 1.0, r.quiet);
-    const double first = 1.0;
+    double first = -1.0;
     out->solution = solveRadiosity(system, r.solver, [&](const SolverStep& s) {
-      // Progress by the residual's way down to the tolerance, on a log scale.
-      if (s.residual > 0.0 && r.solver.tolerance > 0.0)
+      // Progress: the residual's way down to the tolerance, on a log scale.
+      if (first < 0.0) first = s.residual;
+      if (s.residual > 0.0 && first > r.solver.tolerance && r.solver.tolerance > 0.0)
         bar.update(std::clamp(std::log(first / s.residual) / std::log(first / r.solver.tolerance), 0.0, 1.0));
     });
   }
+  const PatchMesh& mesh = out->mesh();
   const std::vector<Rgb>& b = out->solution.radiosity;
   switch (r.show) {
     case RadiositySettings::Show::Solution:
       out->shown = b;
-      for (size_t i = 0; i < b.size(); ++i) out->shown[i] += out->mesh.patches[i].reflectance * out->solution.ambient;
+      for (size_t i = 0; i < b.size(); ++i) out->shown[i] += mesh.patches[i].reflectance * out->solution.ambient;
       break;
     case RadiositySettings::Show::Bounce:
       out->shown = bounce(system, r.bounce);
@@ -109,17 +124,18 @@ std::shared_ptr<const SolvedRadiosity> compute(const Scene& scene, const Radiosi
       break;
     }
   }
-  out->vertexShown.assign(out->mesh.positions.size(), Rgb(0.0f));
+  out->vertexShown.assign(mesh.positions.size(), Rgb(0.0f));
   for (size_t v = 0; v < out->vertexShown.size(); ++v) {
     float area = 0.0f;
-    for (uint32_t p : out->mesh.vertexPatches[v]) {
-      out->vertexShown[v] += out->shown[p] * out->mesh.patches[p].area;
-      area += out->mesh.patches[p].area;
+    for (uint32_t p : mesh.vertexPatches[v]) {
+      out->vertexShown[v] += out->shown[p] * mesh.patches[p].area;
+      area += mesh.patches[p].area;
     }
     if (area > 0.0f) out->vertexShown[v] /= area;
   }
   out->energy = energyBalance(system, b);
-  out->missingTasks = log.missing();
+  out->missingTasks = out->patches->missingTasks;
+  for (const auto& [id, what] : log.missing()) out->missingTasks[id] = what;
   return out;
 }
 
@@ -154,17 +170,29 @@ RadiositySettings radiositySettings(const ParamSet& p) {
 
 std::shared_ptr<const SolvedRadiosity> solveScene(const Scene& scene, const RadiositySettings& settings) {
   static std::mutex mutex;
-  static std::list<std::pair<std::string, std::shared_ptr<const SolvedRadiosity>>> cache;  // newest first
-  const std::string k = key(scene, settings);
+  // Newest first; a few of each, so switching between panes' settings does not recompute.
+  static std::list<std::pair<std::string, std::shared_ptr<const PatchScene>>> patchCache;
+  static std::list<std::pair<std::string, std::shared_ptr<const SolvedRadiosity>>> solveCache;
+  const std::string pk = patchKey(scene, settings), sk = solveKey(pk, settings);
   const std::lock_guard lock(mutex);  // (one solve at a time: it uses every core already)
-  for (auto it = cache.begin(); it != cache.end(); ++it)
-    if (it->first == k) {
-      cache.splice(cache.begin(), cache, it);
-      return cache.front().second;
-    }
-  auto solved = compute(scene, settings);
-  cache.emplace_front(k, solved);
-  if (cache.size() > 4) cache.pop_back();
+  const auto find = [](auto& cache, const std::string& k) {
+    for (auto it = cache.begin(); it != cache.end(); ++it)
+      if (it->first == k) {
+        cache.splice(cache.begin(), cache, it);
+        return cache.front().second;
+      }
+    return typename std::decay_t<decltype(cache.front().second)>{};
+  };
+  if (auto solved = find(solveCache, sk)) return solved;
+  auto patches = find(patchCache, pk);
+  if (!patches) {
+    patches = computePatches(scene, settings);
+    patchCache.emplace_front(pk, patches);
+    if (patchCache.size() > 3) patchCache.pop_back();
+  }
+  auto solved = computeSolution(patches, settings);
+  solveCache.emplace_front(sk, solved);
+  if (solveCache.size() > 8) solveCache.pop_back();
   return solved;
 }
 

@@ -31,21 +31,34 @@ struct RadiositySettings {
 // Reads the technique's parameters (see radiosity_technique.cpp).
 RadiositySettings radiositySettings(const ParamSet& params);
 
-struct SolvedRadiosity {
+// The patches and their form factors: what depends on the geometry, the
+// materials and the meshing/form-factor settings, not on the solver.
+struct PatchScene {
   PatchMesh mesh;
   std::unique_ptr<Accelerator> accel;  // over mesh.geometry
   FormFactors f;
   FormFactorDiagnostics diagnostics;
+  double meshSeconds = 0.0, accelSeconds = 0.0, formFactorSeconds = 0.0;
+  std::map<std::string, std::string> missingTasks;  // student stubs that ran (A5.1)
+};
+
+struct SolvedRadiosity {
+  std::shared_ptr<const PatchScene> patches;  // shared by every solve of the same patches
+  const PatchMesh& mesh() const { return patches->mesh; }
+  const FormFactors& f() const { return patches->f; }
+  const Accelerator& accel() const { return *patches->accel; }
+  const FormFactorDiagnostics& diagnostics() const { return patches->diagnostics; }
   Solution solution;
   std::vector<Rgb> shown;       // per patch: the radiosity displayed (solution + ambient, or bounces)
   std::vector<Rgb> vertexShown; // per mesh vertex: area-weighted mean of its patches' `shown`
   EnergyBalance energy;
-  double meshSeconds = 0.0, accelSeconds = 0.0, formFactorSeconds = 0.0;
-  std::map<std::string, std::string> missingTasks;  // student stubs that ran (A5.x)
-  RadiositySystem system() const { return {mesh.patches, f}; }
+  std::map<std::string, std::string> missingTasks;  // student stubs that ran (A5.x), form factors included
+  RadiositySystem system() const { return {mesh().patches, f()}; }
 };
 
-// Solves `scene` (cached by the scene's content and the settings).
+// Solves `scene` (cached by the scene's content and the settings; the
+// patches and form factors are cached apart, so changing only the solver or
+// the display reuses them).
 std::shared_ptr<const SolvedRadiosity> solveScene(const Scene& scene, const RadiositySettings& settings);
 
 }  // namespace ll::a5

@@ -32,7 +32,7 @@ class Radiosity final : public PixelTechnique {
   }
 
  protected:
-  const Accelerator& accelerator(const RenderContext&) const override { return *solved_->accel; }
+  const Accelerator& accelerator(const RenderContext&) const override { return solved_->accel(); }
 
   Rgb renderSample(const RenderContext& ctx, const PixelSample& s, const Tracer& tracer) const override {
     // Pixels of a solution that went through a stub are striped.
@@ -40,7 +40,7 @@ class Radiosity final : public PixelTechnique {
     const Ray ray = referenceCameraRay(camera_, *frame_, s.position.x, s.position.y);
     Hit hit;
     if (!tracer.intersect(ray, hit, RayKind::Camera)) return ctx.scene.background;  // (over the patches)
-    const a5::Patch& p = solved_->mesh.patches[hit.prim];
+    const a5::Patch& p = solved_->mesh().patches[hit.prim];
     if (glm::dot(p.normal, ray.dir) >= 0.0f) return Rgb(0.0f);  // the back of a patch: not solved
     Rgb b = solved_->shown[hit.prim];
     if (gouraud_) {

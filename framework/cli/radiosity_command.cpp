@@ -80,13 +80,13 @@ Command addRadiosityCommand(CLI::App& app, const GlobalOptions& global) {
     for (const auto& [id, what] : solved->missingTasks)
       std::fprintf(stderr, "lightlab: %s not implemented: %s -- a stand-in was used\n", id.c_str(), what.c_str());
     const a5::Solution& sol = solved->solution;
-    const a5::FormFactorDiagnostics& d = solved->diagnostics;
+    const a5::FormFactorDiagnostics& d = solved->diagnostics();
     const double finalResidual = sol.history.empty() ? 0.0 : sol.history.back().residual;
     const int iterations = sol.history.empty() ? 0 : sol.history.back().iteration;
     std::printf("%zu patches (%.3f s), form factors %s: %zu non-zeros, %.3f s, row sums %.4f..%.4f (mean %.4f), "
                 "reciprocity error mean %.2g max %.2g\n",
-                solved->mesh.patches.size(), solved->meshSeconds, a5::methodName(settings.formFactors.method).c_str(),
-                d.nonZeros, solved->formFactorSeconds, d.rowSumMin, d.rowSumMax, d.rowSumMean, d.reciprocityMeanError,
+                solved->mesh().patches.size(), solved->patches->meshSeconds, a5::methodName(settings.formFactors.method).c_str(),
+                d.nonZeros, solved->patches->formFactorSeconds, d.rowSumMin, d.rowSumMax, d.rowSumMean, d.reciprocityMeanError,
                 d.reciprocityMaxError);
     std::printf("solver %s: %s after %d iterations, residual %.3g, %.3f s; power emitted %.4g, absorbed %.4g, "
                 "escaped %.4g\n",
@@ -95,13 +95,13 @@ Command addRadiosityCommand(CLI::App& app, const GlobalOptions& global) {
                 solved->energy.escaped);
     if (!o->plot.empty()) {
       writePlot(sol, "radiosity: " + a5::methodName(settings.solver.method) + ", " +
-                         std::to_string(solved->mesh.patches.size()) + " patches", o->plot);
+                         std::to_string(solved->mesh().patches.size()) + " patches", o->plot);
       std::printf("wrote %s\n", o->plot.c_str());
     }
     if (o->json.empty()) return;
     nlohmann::json patches = nlohmann::json::array();
-    for (size_t i = 0; i < solved->mesh.patches.size(); ++i) {
-      const a5::Patch& p = solved->mesh.patches[i];
+    for (size_t i = 0; i < solved->mesh().patches.size(); ++i) {
+      const a5::Patch& p = solved->mesh().patches[i];
       patches.push_back({{"id", i},
                          {"object", s.scene.objects[p.object].name},
                          {"object_id", p.object},
@@ -118,10 +118,10 @@ Command addRadiosityCommand(CLI::App& app, const GlobalOptions& global) {
     const nlohmann::json out = {
         {"scene", o->scene},
         {"parameters", s.techniqueParams.toJson()},
-        {"mesh", {{"patches", solved->mesh.patches.size()}, {"seconds", solved->meshSeconds}}},
+        {"mesh", {{"patches", solved->mesh().patches.size()}, {"seconds", solved->patches->meshSeconds}}},
         {"form_factors",
          {{"method", a5::methodName(settings.formFactors.method)},
-          {"seconds", solved->formFactorSeconds},
+          {"seconds", solved->patches->formFactorSeconds},
           {"non_zeros", d.nonZeros},
           {"visibility_rays", d.visibilityRays},
           {"row_sum", {{"min", d.rowSumMin}, {"mean", d.rowSumMean}, {"max", d.rowSumMax}}},
