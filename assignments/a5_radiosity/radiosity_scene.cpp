@@ -168,6 +168,10 @@ RadiositySettings radiositySettings(const ParamSet& p) {
   return r;
 }
 
+std::shared_ptr<const SolvedRadiosity> solveSceneUncached(const Scene& scene, const RadiositySettings& settings) {
+  return computeSolution(computePatches(scene, settings), settings);
+}
+
 std::shared_ptr<const SolvedRadiosity> solveScene(const Scene& scene, const RadiositySettings& settings) {
   static std::mutex mutex;
   // Newest first; a few of each, so switching between panes' settings does not recompute.

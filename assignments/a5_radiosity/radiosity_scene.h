@@ -60,5 +60,7 @@ struct SolvedRadiosity {
 // patches and form factors are cached apart, so changing only the solver or
 // the display reuses them).
 std::shared_ptr<const SolvedRadiosity> solveScene(const Scene& scene, const RadiositySettings& settings);
+// The same without the cache: every phase runs (benchmarks).
+std::shared_ptr<const SolvedRadiosity> solveSceneUncached(const Scene& scene, const RadiositySettings& settings);
 
 }  // namespace ll::a5

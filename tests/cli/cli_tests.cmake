@@ -61,8 +61,24 @@ set_tests_properties(cli.info.cornell_json PROPERTIES PASS_REGULAR_EXPRESSION "\
 add_test(NAME cli.trace.pixel_json
          COMMAND ${LL} trace ${SCENES}/cornell_box.json --pixel 256 480 --json)
 set_tests_properties(cli.trace.pixel_json PROPERTIES PASS_REGULAR_EXPRESSION "\"object\": \"floor\"")
+# Radiosity from the command line: every patch and the solver's history as JSON, the residual plot.
+add_test(NAME cli.radiosity.cornell_box
+         COMMAND ${LL} --quiet radiosity ${SCENES}/cornell_box.json --set patch_size=0.1 --set hemicube_res=16
+                 --json ${OUT}/radiosity.json --plot ${OUT}/radiosity.svg)
+set_tests_properties(cli.radiosity.cornell_box PROPERTIES PASS_REGULAR_EXPRESSION "converged after [0-9]+ iterations")
+add_test(NAME cli.radiosity.cornell_box_json
+         COMMAND ${Python3_EXECUTABLE} -c "import json,sys; s=json.load(open(sys.argv[1])); p=s['patches']; \
+assert len(p)>300, len(p); assert set(p[0])>={'id','object','area','centre','normal','emission','reflectance','radiosity'}; \
+h=s['solver']['history']; assert s['solver']['converged'] and h[-1]['residual']<h[0]['residual'], h; \
+assert abs(s['form_factors']['row_sum']['max']-1)<0.01, s['form_factors']; \
+assert open(sys.argv[2]).read().startswith('<svg'); print('ok', len(p), 'patches')" ${OUT}/radiosity.json ${OUT}/radiosity.svg)
+set_tests_properties(cli.radiosity.cornell_box_json PROPERTIES DEPENDS cli.radiosity.cornell_box)
+lightlab_error_test(radiosity_bad_solver "parameter 'solver': unknown value 'cg' \\(one of: gauss-seidel, jacobi, direct, southwell\\)"
+                    radiosity ${SCENES}/cornell_box.json --set solver=cg)
+lightlab_error_test(radiosity_direct_too_big "solver 'direct': [0-9]+ patches, more than the dense LU's limit of 3000"
+                    --quiet radiosity ${SCENES}/cornell_box.json --set solver=direct --set patch_size=0.03 --set hemicube_res=4)
 add_test(NAME cli.help COMMAND ${LL} --help)
-set_tests_properties(cli.help PROPERTIES PASS_REGULAR_EXPRESSION "render.*info.*trace.*compare")
+set_tests_properties(cli.help PROPERTIES PASS_REGULAR_EXPRESSION "render.*info.*trace.*compare.*radiosity")
 lightlab_error_test(compare_sizes "image sizes differ" compare ${OUT}/cube.pfm ${OUT}/cornell.png)
 set_tests_properties(cli.error.compare_sizes PROPERTIES DEPENDS "cli.render.obj_scene;cli.render.cornell_box")
 lightlab_error_test(compare_missing "nothere\\.png: no such image file" compare ${OUT}/nothere.png ${OUT}/cornell.png)

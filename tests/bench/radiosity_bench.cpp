@@ -1,0 +1,55 @@
+// Radiosity on the Cornell box (assignment 5): meshing, form factors and the
+// solve, each phase timed, at about 6,000 patches. The target: form
+// factors plus solution within 5 s on 2 cores.
+//   build/tests/bench/lightlab_bench --benchmark_filter=Radiosity
+#include <benchmark/benchmark.h>
+
+#include <string>
+
+#include <tbb/global_control.h>
+
+#include "radiosity_scene.h"
+#include "scene/scene_loader.h"
+
+namespace {
+
+using namespace ll;
+
+// Arguments: hemicube resolution, solver (0 gauss-seidel, 1 southwell, 2 jacobi).
+void BM_RadiosityCornell(benchmark::State& state) {
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 2);
+  const Scene scene = loadScene(std::string(LIGHTLAB_DATA_DIR) + "/scenes/cornell_box.json");
+  a5::RadiositySettings r;
+  r.patchSize = 0.05f;
+  r.formFactors.hemicubeResolution = static_cast<int>(state.range(0));
+  r.solver.method = state.range(1) == 1   ? a5::SolverMethod::Southwell
+                    : state.range(1) == 2 ? a5::SolverMethod::Jacobi
+                                          : a5::SolverMethod::GaussSeidel;
+  double mesh = 0, ff = 0, solve = 0, patches = 0, nonZeros = 0;
+  for (auto _ : state) {
+    const auto s = a5::solveSceneUncached(scene, r);
+    mesh += s->patches->meshSeconds + s->patches->accelSeconds;
+    ff += s->patches->formFactorSeconds;
+    solve += s->solution.seconds;
+    patches = static_cast<double>(s->mesh().patches.size());
+    nonZeros = static_cast<double>(s->f().column.size());
+  }
+  const auto n = static_cast<double>(state.iterations());
+  state.counters["patches"] = patches;
+  state.counters["nonzeros"] = nonZeros;
+  state.counters["mesh_s"] = mesh / n;
+  state.counters["formfactors_s"] = ff / n;
+  state.counters["solve_s"] = solve / n;
+}
+
+BENCHMARK(BM_RadiosityCornell)
+    ->Args({16, 0})
+    ->Args({32, 0})
+    ->Args({32, 1})
+    ->Args({32, 2})
+    ->ArgNames({"hemicube", "solver"})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(1);
+
+}  // namespace
