@@ -66,6 +66,13 @@ if "$CHECK" "$OUT/ray_tree.png" pane 0 "$OUT/whitted.pfm" >/dev/null; then  # th
   echo "FAIL: the ray tree is not drawn over pane A"; exit 1
 fi
 echo "ok: whitted pane and its ray tree"
+# Radiosity's bounces in four panes (a bundled preset): every pane finishes, the patches are solved once.
+xvfb-run -a -s '-screen 0 1280x800x24' "$LL" gui --preset "$ROOT/data/presets/radiosity_bounces.json" \
+  --screenshot "$OUT/radiosity.png" --frames 3 --timeout 600 >/dev/null
+python3 -c "import json,sys; ps=json.load(open('$OUT/radiosity.json'))['panes'][:4]; \
+sys.exit(0 if all(p['phase'] == 'done' and not p['error'] for p in ps) else 1)" \
+  || { echo "FAIL: the radiosity panes did not finish"; exit 1; }
+echo "ok: radiosity bounces"
 # The checker itself must catch a wrong picture: pane 1 is not the 16-sample render.
 if "$CHECK" "$OUT/two_panes.png" pane 1 "$OUT/a.pfm" >/dev/null; then
   echo "FAIL: the checker accepted the wrong reference"; exit 1
