@@ -59,19 +59,6 @@ std::vector<HemicubeCell> hemicube(int res) {
   return cells;
 }
 
-// Sorts by j and adds up entries of the same j.
-void merge(std::vector<Entry>& row) {
-  std::sort(row.begin(), row.end(), [](const Entry& a, const Entry& b) { return a.j < b.j; });
-  size_t out = 0;
-  for (size_t k = 0; k < row.size(); ++k) {
-    if (out > 0 && row[out - 1].j == row[k].j)
-      row[out - 1].f += row[k].f;
-    else
-      row[out++] = row[k];
-  }
-  row.resize(out);
-}
-
 // A point on triangle (a, b, c) for the unit square sample u.
 Vec3 pointOnTriangle(const Vec3& a, const Vec3& b, const Vec3& c, Vec2 u) {
   const float s = std::sqrt(u.x);
@@ -132,12 +119,14 @@ std::vector<Entry> analyticRow(const PatchMesh& mesh, const Accelerator& accel, 
   return row;
 }
 
+// `accumulator` (size N, all zero on entry and on return) adds up the cells per patch.
 std::vector<Entry> hemicubeRow(const PatchMesh& mesh, const Accelerator& accel, uint32_t i,
-                               const std::vector<HemicubeCell>& cells, QueryCounters& q, uint64_t& rays) {
+                               const std::vector<HemicubeCell>& cells, std::vector<float>& accumulator,
+                               QueryCounters& q, uint64_t& rays) {
   const Patch& p = mesh.patches[i];
   Vec3 t, b;
   tangentFrame(p.normal, t, b);
-  std::vector<Entry> row;
+  std::vector<uint32_t> seen;
   Ray r;
   r.origin = offsetRayOrigin(p.centre, p.normal);
   r.tmin = 0.0f;
@@ -148,9 +137,16 @@ std::vector<Entry> hemicubeRow(const PatchMesh& mesh, const Accelerator& accel, 
     ++rays;
     if (!accel.intersect(r, hit, q) || hit.prim == i) continue;
     if (glm::dot(mesh.patches[hit.prim].normal, r.dir) >= 0.0f) continue;  // its back: patches receive in front
-    row.push_back({hit.prim, c.dF});
+    if (accumulator[hit.prim] == 0.0f) seen.push_back(hit.prim);
+    accumulator[hit.prim] += c.dF;
   }
-  merge(row);
+  std::sort(seen.begin(), seen.end());
+  std::vector<Entry> row;
+  row.reserve(seen.size());
+  for (const uint32_t j : seen) {
+    row.push_back({j, accumulator[j]});
+    accumulator[j] = 0.0f;
+  }
   return row;
 }
 
@@ -211,13 +207,14 @@ FormFactors computeFormFactors(const PatchMesh& mesh, const Accelerator& accel, 
                       const ScopedTaskLog scope(log);
                       QueryCounters q;
                       uint64_t local = 0;
+                      std::vector<float> accumulator(s.method == FormFactorMethod::Hemicube ? n : 0, 0.0f);
                       for (uint32_t i = range.begin(); i < range.end(); ++i) {
                         switch (s.method) {
                           case FormFactorMethod::Analytic:
                             rows[i] = analyticRow(mesh, accel, i, std::max(s.visibilitySamples, 1), q, local);
                             break;
                           case FormFactorMethod::Hemicube:
-                            rows[i] = hemicubeRow(mesh, accel, i, cells, q, local);
+                            rows[i] = hemicubeRow(mesh, accel, i, cells, accumulator, q, local);
                             break;
                           case FormFactorMethod::MonteCarlo:
                             rows[i] = monteCarloRow(mesh, accel, i, std::max(s.monteCarloSamples, 1), s.seed, q, local);
