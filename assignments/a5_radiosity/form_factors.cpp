@@ -17,10 +17,7 @@ namespace ll::a5 {
 
 namespace {
 
-struct Entry {
-  uint32_t j;
-  float f;
-};
+using Entry = FormFactorEntry;
 
 // Orthonormal tangents (t, b) of unit n.
 void tangentFrame(const Vec3& n, Vec3& t, Vec3& b) {
@@ -182,6 +179,55 @@ std::vector<Entry> monteCarloRow(const PatchMesh& mesh, const Accelerator& accel
 }
 
 }  // namespace
+
+struct HemicubeRows::Cells {
+  std::vector<HemicubeCell> cells;
+};
+
+HemicubeRows::HemicubeRows(const PatchMesh& mesh, const Accelerator& accel, int resolution)
+    : mesh_(mesh), accel_(accel), cells_(std::make_unique<Cells>()), accumulator_(mesh.patches.size(), 0.0f) {
+  cells_->cells = hemicube(std::max(resolution, 2));
+}
+
+HemicubeRows::~HemicubeRows() = default;
+
+std::vector<FormFactorEntry> HemicubeRows::row(uint32_t i) {
+  // One row's rays in parallel (progressive refinement computes rows one by one).
+  const Patch& p = mesh_.patches[i];
+  Vec3 t, b;
+  tangentFrame(p.normal, t, b);
+  const std::vector<HemicubeCell>& cells = cells_->cells;
+  std::vector<uint32_t> hitPatch(cells.size(), Hit::kNone);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, cells.size(), 256), [&](const tbb::blocked_range<size_t>& range) {
+    QueryCounters q;
+    Ray r;
+    r.origin = offsetRayOrigin(p.centre, p.normal);
+    r.tmin = 0.0f;
+    for (size_t c = range.begin(); c < range.end(); ++c) {
+      r.dir = cells[c].dir.x * t + cells[c].dir.y * b + cells[c].dir.z * p.normal;
+      r.tmax = kInfinity;
+      Hit hit;
+      if (accel_.intersect(r, hit, q) && hit.prim != i && glm::dot(mesh_.patches[hit.prim].normal, r.dir) < 0.0f)
+        hitPatch[c] = hit.prim;
+    }
+  });
+  rays_ += cells.size();
+  std::vector<uint32_t> seen;
+  for (size_t c = 0; c < cells.size(); ++c) {
+    const uint32_t j = hitPatch[c];
+    if (j == Hit::kNone) continue;
+    if (accumulator_[j] == 0.0f) seen.push_back(j);
+    accumulator_[j] += cells[c].dF;
+  }
+  std::sort(seen.begin(), seen.end());
+  std::vector<FormFactorEntry> row;
+  row.reserve(seen.size());
+  for (const uint32_t j : seen) {
+    row.push_back({j, accumulator_[j]});
+    accumulator_[j] = 0.0f;
+  }
+  return row;
+}
 
 float FormFactors::at(uint32_t i, uint32_t j) const {
   const auto begin = column.begin() + rowStart[i], end = column.begin() + rowStart[i + 1];

@@ -15,6 +15,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -56,6 +57,29 @@ struct FormFactorDiagnostics {
 FormFactors computeFormFactors(const PatchMesh& mesh, const Accelerator& accel, const FormFactorSettings& settings,
                                FormFactorDiagnostics* diagnostics = nullptr,
                                const std::function<void(size_t, size_t)>& progress = {});
+
+// Rows of the hemicube method one at a time (progressive refinement
+// computes a row only when its patch shoots). Not thread-safe.
+struct FormFactorEntry {
+  uint32_t j;
+  float f;
+};
+class HemicubeRows {
+ public:
+  HemicubeRows(const PatchMesh& mesh, const Accelerator& accel, int resolution);
+  ~HemicubeRows();
+  // F_ij for every patch j the hemicube of patch i sees, sorted by j.
+  std::vector<FormFactorEntry> row(uint32_t i);
+  uint64_t rays() const { return rays_; }
+
+ private:
+  const PatchMesh& mesh_;
+  const Accelerator& accel_;
+  struct Cells;
+  std::unique_ptr<Cells> cells_;
+  std::vector<float> accumulator_;
+  uint64_t rays_ = 0;
+};
 
 // The closed form for two parallel coaxial squares of side a at distance h
 // (Hottel), and for perpendicular rectangles sharing an edge, for tests and

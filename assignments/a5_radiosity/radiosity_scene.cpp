@@ -63,7 +63,8 @@ std::string solveKey(const std::string& patches, const RadiositySettings& r) {
          std::to_string(v.maxIterations) + "|" + std::to_string(static_cast<int>(r.show)) + "|" + std::to_string(r.bounce);
 }
 
-std::shared_ptr<const PatchScene> computePatches(const Scene& scene, const RadiositySettings& r) {
+std::shared_ptr<const PatchScene> computePatches(const Scene& scene, const RadiositySettings& r,
+                                                 bool formFactors = true) {
   auto out = std::make_shared<PatchScene>();
   TaskLog log;  // catches the A5.1 stub
   const ScopedTaskLog scope(&log);
@@ -75,6 +76,7 @@ std::shared_ptr<const PatchScene> computePatches(const Scene& scene, const Radio
   out->accel = info.make(ParamSet(info.name, info.params));
   out->accel->build(out->mesh.geometry);
   out->accelSeconds = since(t);
+  if (!formFactors) return out;
   t = std::chrono::steady_clock::now();
   {
     ProgressBar bar("form factors (" + methodName(r.formFactors.method) + ", " +
@@ -165,7 +167,29 @@ RadiositySettings radiositySettings(const ParamSet& p) {
            : show == "bounces" ? RadiositySettings::Show::Bounces
                                : RadiositySettings::Show::Solution;
   r.bounce = p.getInt("bounce");
+  r.progressive = p.getBool("progressive");
   return r;
+}
+
+ProgressiveScene progressiveScene(const Scene& scene, const RadiositySettings& settings) {
+  static std::mutex mutex;
+  static std::list<std::pair<std::string, ProgressiveScene>> cache;  // newest first
+  const std::string k = std::to_string(fingerprint(scene)) + "|" + std::to_string(settings.patchSize) + "|" +
+                        std::to_string(settings.sphereSegments) + "|" + settings.accelerator + "|" +
+                        std::to_string(settings.formFactors.hemicubeResolution);
+  const std::lock_guard lock(mutex);
+  for (auto it = cache.begin(); it != cache.end(); ++it)
+    if (it->first == k) {
+      cache.splice(cache.begin(), cache, it);
+      return cache.front().second;
+    }
+  ProgressiveScene s;
+  s.patches = computePatches(scene, settings, false);
+  s.state = std::make_shared<ProgressiveRadiosity>(s.patches->mesh, *s.patches->accel,
+                                                   settings.formFactors.hemicubeResolution);
+  cache.emplace_front(k, s);
+  if (cache.size() > 2) cache.pop_back();
+  return s;
 }
 
 std::shared_ptr<const SolvedRadiosity> solveSceneUncached(const Scene& scene, const RadiositySettings& settings) {

@@ -12,6 +12,7 @@
 
 #include "core/params.h"
 #include "form_factors.h"
+#include "progressive.h"
 #include "radiosity_solver.h"
 
 namespace ll::a5 {
@@ -25,6 +26,7 @@ struct RadiositySettings {
   // What the display shows: the solution, bounce k alone (E, K E, K^2 E, ...), or bounces 0..k summed.
   enum class Show { Solution, Bounce, Bounces } show = Show::Solution;
   int bounce = 1;
+  bool progressive = false;  // Southwell with rows computed per shot; each render pass shoots more
   bool quiet = true;  // progress bars on the terminal
 };
 
@@ -60,6 +62,15 @@ struct SolvedRadiosity {
 // patches and form factors are cached apart, so changing only the solver or
 // the display reuses them).
 std::shared_ptr<const SolvedRadiosity> solveScene(const Scene& scene, const RadiositySettings& settings);
+// Progressive refinement: the patches (no form-factor matrix) and the shared
+// state of their Southwell iteration, rows computed as patches shoot (cached
+// like solveScene: a new render of the same scene continues where it stands).
+struct ProgressiveScene {
+  std::shared_ptr<const PatchScene> patches;  // mesh and accelerator; f stays empty
+  std::shared_ptr<ProgressiveRadiosity> state;
+};
+ProgressiveScene progressiveScene(const Scene& scene, const RadiositySettings& settings);
+
 // The same without the cache: every phase runs (benchmarks).
 std::shared_ptr<const SolvedRadiosity> solveSceneUncached(const Scene& scene, const RadiositySettings& settings);
 

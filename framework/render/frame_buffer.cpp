@@ -16,6 +16,12 @@ void FrameBuffer::clear() {
   passes_ = 0;
 }
 
+void FrameBuffer::clearSamples() {
+  const int passes = passes_.load();
+  clear();
+  passes_ = passes;
+}
+
 bool FrameBuffer::anyStub() const { return std::any_of(stub_.begin(), stub_.end(), [](uint8_t s) { return s != 0; }); }
 
 Image FrameBuffer::resolve(bool markStubs) const {

@@ -28,6 +28,8 @@ class FrameBuffer {
   void markStub(int x, int y) { stub_[index(x, y)] = 1; }
   void completePass() { ++passes_; }
   void clear();
+  // Drops every sample (and stub mark) but keeps the count of completed passes.
+  void clearSamples();
 
   // Mean of each pixel's samples; pixels that used a stub get magenta stripes.
   Image resolve(bool markStubs = true) const;

@@ -21,7 +21,9 @@ Vec2 stratifiedOffset(int index, int count, Rng& rng) {
 void PixelTechnique::renderPass(const RenderContext& ctx, int pass, FrameBuffer& fb, WorkCounters& counters,
                                 const std::atomic<bool>& cancel) {
   constexpr int kTile = 16;
-  const int spp = passCount(ctx);
+  beginPass(ctx, pass, fb);
+  if (cancel.load(std::memory_order_relaxed)) return;
+  const int spp = samplesPerPixel(ctx);
   const int w = fb.width(), h = fb.height();
   std::mutex merge;
   tbb::parallel_for(

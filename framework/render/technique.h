@@ -88,6 +88,16 @@ class PixelTechnique : public Technique {
   virtual Rgb renderSample(const RenderContext& ctx, const PixelSample& sample, const Tracer& tracer) const = 0;
   // The accelerator this technique traces with (default: the context's).
   virtual const Accelerator& accelerator(const RenderContext& ctx) const { return ctx.accel; }
+  // Samples per pixel the passes stratify over (default: one per pass).
+  virtual int samplesPerPixel(const RenderContext& ctx) const { return passCount(ctx); }
+  // Called before each pass's samples. A technique whose passes refine the
+  // whole picture (progressive radiosity) advances here and clears the
+  // previous pass's samples (fb.clearSamples()); by default nothing happens.
+  virtual void beginPass(const RenderContext& ctx, int pass, FrameBuffer& fb) {
+    (void)ctx;
+    (void)pass;
+    (void)fb;
+  }
 };
 
 // Sample position inside the unit pixel for sample `index` of `count`:
