@@ -246,22 +246,30 @@ TEST(A5_Solvers, TheBouncesSumToTheSolution) {
   for (size_t i = 0; i < sum.size(); ++i) EXPECT_NEAR(sum[i].r, s->solution.radiosity[i].r, 1e-3f * s->solution.radiosity[i].r);
 }
 
-TEST(A5_Radiosity, RendersTheCornellBoxWithColourBleedingAndNoNaN) {
-  const Scene scene = loadScene(std::string(LIGHTLAB_DATA_DIR) + "/scenes/cornell_box.json");
+// Renders the Cornell box with -t radiosity and `sets` at size x size, `spp` passes; each pass's picture
+// goes to `passes` if given.
+Image renderCornell(const std::vector<std::pair<std::string, std::string>>& sets, int size, int spp,
+                    std::vector<Image>* passes = nullptr) {
+  static const Scene scene = loadScene(std::string(LIGHTLAB_DATA_DIR) + "/scenes/cornell_box.json");
   const AcceleratorInfo& a = findAccelerator("none");
   const auto accel = buildAccelerator(a, ParamSet(a.name, a.params), scene.geometry);
   const TechniqueInfo& t = findTechnique("radiosity");
   ParamSet params(t.name, t.params);
-  params.set("patch_size", "0.1");
-  params.set("hemicube_res", "16");
+  for (const auto& [k, v] : sets) params.set(k, v);
   RenderSettings settings;
-  settings.width = 48;
-  settings.height = 48;
+  settings.width = settings.height = size;
+  settings.spp = spp;
   const auto technique = t.make();
   RenderJob job(scene, *accel, *technique, params, settings);
-  job.run();
+  job.run([&](int, int) {
+    if (passes) passes->push_back(job.frame().resolve(false));
+  });
   EXPECT_EQ(job.stats().work.nonFinite, 0u);
-  const Image img = job.frame().resolve(false);
+  return job.frame().resolve(false);
+}
+
+TEST(A5_Radiosity, RendersTheCornellBoxWithColourBleedingAndNoNaN) {
+  const Image img = renderCornell({{"patch_size", "0.1"}, {"hemicube_res", "16"}}, 48, 1);
   // The white back wall near the red wall is redder than near the green one (colour bleeding).
   const Rgb nearRed = img.at(12, 20), nearGreen = img.at(35, 20);
   EXPECT_GT(nearRed.r / nearRed.g, nearGreen.r / nearGreen.g);
@@ -298,34 +306,15 @@ TEST(A5_Radiosity, ProgressiveRefinementConvergesToTheBatchSouthwellAndKeepsItsS
 }
 
 TEST(A5_Radiosity, EveryProgressivePassRedrawsTheWholePicture) {
-  const Scene scene = loadScene(std::string(LIGHTLAB_DATA_DIR) + "/scenes/cornell_box.json");
-  const AcceleratorInfo& a = findAccelerator("none");
-  const auto accel = buildAccelerator(a, ParamSet(a.name, a.params), scene.geometry);
-  const TechniqueInfo& t = findTechnique("radiosity");
-  ParamSet params(t.name, t.params);
-  params.set("progressive", "true");
-  params.set("patch_size", "0.09");
-  params.set("hemicube_res", "12");
-  RenderSettings settings;
-  settings.width = 32;
-  settings.height = 32;
-  const auto render = [&](int spp, std::vector<Image>* passes) {
-    settings.spp = spp;
-    const auto technique = t.make();
-    RenderJob job(scene, *accel, *technique, params, settings);
-    job.run([&](int, int) {
-      if (passes) passes->push_back(job.frame().resolve(false));
-    });
-    EXPECT_EQ(job.stats().work.nonFinite, 0u);
-    return job.frame().resolve(false);
-  };
+  const std::vector<std::pair<std::string, std::string>> sets = {
+      {"progressive", "true"}, {"patch_size", "0.09"}, {"hemicube_res", "12"}};
   std::vector<Image> passes;
-  const Image last = render(4, &passes);
+  const Image last = renderCornell(sets, 32, 4, &passes);
   ASSERT_EQ(passes.size(), 4u);
   EXPECT_NE(passes[0].pixels(), passes[3].pixels());  // the solve moved on between passes
   // Rendering again (the state is cached and converged): one pass gives the same picture, so the
   // four passes above were not averaged -- the last one replaced the others.
-  EXPECT_EQ(render(1, nullptr).pixels(), last.pixels());
+  EXPECT_EQ(renderCornell(sets, 32, 1).pixels(), last.pixels());
 }
 
 }  // namespace

@@ -116,26 +116,36 @@ std::vector<Entry> analyticRow(const PatchMesh& mesh, const Accelerator& accel, 
   return row;
 }
 
-// `accumulator` (size N, all zero on entry and on return) adds up the cells per patch.
-std::vector<Entry> hemicubeRow(const PatchMesh& mesh, const Accelerator& accel, uint32_t i,
-                               const std::vector<HemicubeCell>& cells, std::vector<float>& accumulator,
-                               QueryCounters& q, uint64_t& rays) {
+// Cells [begin, end) of patch i's hemicube: the patch each cell's ray hits
+// in front (hitPatch[c]; Hit::kNone for nothing, patch i or a back side).
+void castHemicube(const PatchMesh& mesh, const Accelerator& accel, uint32_t i, const std::vector<HemicubeCell>& cells,
+                  size_t begin, size_t end, std::vector<uint32_t>& hitPatch, QueryCounters& q) {
   const Patch& p = mesh.patches[i];
   Vec3 t, b;
   tangentFrame(p.normal, t, b);
-  std::vector<uint32_t> seen;
   Ray r;
   r.origin = offsetRayOrigin(p.centre, p.normal);
   r.tmin = 0.0f;
-  for (const HemicubeCell& c : cells) {
-    r.dir = c.dir.x * t + c.dir.y * b + c.dir.z * p.normal;
+  for (size_t c = begin; c < end; ++c) {
+    r.dir = cells[c].dir.x * t + cells[c].dir.y * b + cells[c].dir.z * p.normal;
     r.tmax = kInfinity;
     Hit hit;
-    ++rays;
-    if (!accel.intersect(r, hit, q) || hit.prim == i) continue;
-    if (glm::dot(mesh.patches[hit.prim].normal, r.dir) >= 0.0f) continue;  // its back: patches receive in front
-    if (accumulator[hit.prim] == 0.0f) seen.push_back(hit.prim);
-    accumulator[hit.prim] += c.dF;
+    const bool front = accel.intersect(r, hit, q) && hit.prim != i &&
+                       glm::dot(mesh.patches[hit.prim].normal, r.dir) < 0.0f;  // patches receive in front
+    hitPatch[c] = front ? hit.prim : Hit::kNone;
+  }
+}
+
+// The row from the cells' hits: each patch's delta form factors summed.
+// `accumulator` (size N) is all zero on entry and on return.
+std::vector<Entry> sumCells(const std::vector<HemicubeCell>& cells, const std::vector<uint32_t>& hitPatch,
+                            std::vector<float>& accumulator) {
+  std::vector<uint32_t> seen;
+  for (size_t c = 0; c < cells.size(); ++c) {
+    const uint32_t j = hitPatch[c];
+    if (j == Hit::kNone) continue;
+    if (accumulator[j] == 0.0f) seen.push_back(j);
+    accumulator[j] += cells[c].dF;
   }
   std::sort(seen.begin(), seen.end());
   std::vector<Entry> row;
@@ -145,6 +155,15 @@ std::vector<Entry> hemicubeRow(const PatchMesh& mesh, const Accelerator& accel, 
     accumulator[j] = 0.0f;
   }
   return row;
+}
+
+std::vector<Entry> hemicubeRow(const PatchMesh& mesh, const Accelerator& accel, uint32_t i,
+                               const std::vector<HemicubeCell>& cells, std::vector<float>& accumulator,
+                               QueryCounters& q, uint64_t& rays) {
+  std::vector<uint32_t> hitPatch(cells.size());
+  castHemicube(mesh, accel, i, cells, 0, cells.size(), hitPatch, q);
+  rays += cells.size();
+  return sumCells(cells, hitPatch, accumulator);
 }
 
 std::vector<Entry> monteCarloRow(const PatchMesh& mesh, const Accelerator& accel, uint32_t i, int samples,
@@ -193,40 +212,14 @@ HemicubeRows::~HemicubeRows() = default;
 
 std::vector<FormFactorEntry> HemicubeRows::row(uint32_t i) {
   // One row's rays in parallel (progressive refinement computes rows one by one).
-  const Patch& p = mesh_.patches[i];
-  Vec3 t, b;
-  tangentFrame(p.normal, t, b);
   const std::vector<HemicubeCell>& cells = cells_->cells;
-  std::vector<uint32_t> hitPatch(cells.size(), Hit::kNone);
+  std::vector<uint32_t> hitPatch(cells.size());
   tbb::parallel_for(tbb::blocked_range<size_t>(0, cells.size(), 256), [&](const tbb::blocked_range<size_t>& range) {
     QueryCounters q;
-    Ray r;
-    r.origin = offsetRayOrigin(p.centre, p.normal);
-    r.tmin = 0.0f;
-    for (size_t c = range.begin(); c < range.end(); ++c) {
-      r.dir = cells[c].dir.x * t + cells[c].dir.y * b + cells[c].dir.z * p.normal;
-      r.tmax = kInfinity;
-      Hit hit;
-      if (accel_.intersect(r, hit, q) && hit.prim != i && glm::dot(mesh_.patches[hit.prim].normal, r.dir) < 0.0f)
-        hitPatch[c] = hit.prim;
-    }
+    castHemicube(mesh_, accel_, i, cells, range.begin(), range.end(), hitPatch, q);
   });
   rays_ += cells.size();
-  std::vector<uint32_t> seen;
-  for (size_t c = 0; c < cells.size(); ++c) {
-    const uint32_t j = hitPatch[c];
-    if (j == Hit::kNone) continue;
-    if (accumulator_[j] == 0.0f) seen.push_back(j);
-    accumulator_[j] += cells[c].dF;
-  }
-  std::sort(seen.begin(), seen.end());
-  std::vector<FormFactorEntry> row;
-  row.reserve(seen.size());
-  for (const uint32_t j : seen) {
-    row.push_back({j, accumulator_[j]});
-    accumulator_[j] = 0.0f;
-  }
-  return row;
+  return sumCells(cells, hitPatch, accumulator_);
 }
 
 float FormFactors::at(uint32_t i, uint32_t j) const {
