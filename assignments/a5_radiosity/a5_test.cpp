@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "a5_tasks.h"
+#include "metrics/image_metrics.h"
 #include "modules/registry.h"
 #include "radiosity_scene.h"
 #include "render/render_job.h"
@@ -303,6 +304,29 @@ TEST(A5_Radiosity, ProgressiveRefinementConvergesToTheBatchSouthwellAndKeepsItsS
   EXPECT_LT(worst / peak, 1e-3);  // the same rows, the same shooting order: the same answer to the tolerance
   // Asking again (a new render after a camera move) continues from where it stands.
   EXPECT_EQ(a5::progressiveScene(scene, r).state.get(), p.state.get());
+}
+
+TEST(A5_Radiosity, TheRasterizerShowsTheSameSolutionAsRayCasting) {
+  const Scene scene = loadScene(std::string(LIGHTLAB_DATA_DIR) + "/scenes/cornell_box.json");
+  const AcceleratorInfo& a = findAccelerator("none");
+  const auto accel = buildAccelerator(a, ParamSet(a.name, a.params), scene.geometry);
+  const auto render = [&](const std::string& technique) {
+    const TechniqueInfo& t = findTechnique(technique);
+    ParamSet params(t.name, t.params);
+    params.set("patch_size", "0.1");
+    params.set("hemicube_res", "16");
+    if (params.has("samples")) params.set("samples", "16");
+    RenderSettings settings;
+    settings.width = settings.height = 64;
+    settings.spp = technique == "radiosity" ? 16 : 1;
+    const auto tech = t.make();
+    RenderJob job(scene, *accel, *tech, params, settings);
+    job.run();
+    EXPECT_EQ(job.stats().work.nonFinite, 0u);
+    return job.frame().resolve(false);
+  };
+  const ImageError e = compareImages(render("radiosity-raster"), render("radiosity"));
+  EXPECT_GT(e.ssim, 0.98);
 }
 
 TEST(A5_Radiosity, EveryProgressivePassRedrawsTheWholePicture) {

@@ -9,11 +9,15 @@
 //     [--set solver=gauss-seidel|jacobi|direct|southwell] [--set tolerance=1e-4]
 //     [--set show=solution|bounce|bounces --set bounce=K]
 //   lightlab radiosity SCENE --json OUT.json     # every patch and the solver's history
+//   lightlab render SCENE -t radiosity-raster     # the same solution through A1's rasterizer
 #include <algorithm>
 #include <memory>
 #include <optional>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "radiosity_scene.h"
+#include "rasterizer.h"
 #include "render/technique.h"
 #include "scene/camera.h"
 
@@ -102,45 +106,132 @@ class Radiosity final : public PixelTechnique {
   std::vector<Rgb> shown_, corners_;  // per patch and per mesh vertex: the radiosity shown
 };
 
+// The parameters of the solve, shared by both displays.
+std::vector<ParamDecl> radiosityParams() {
+  return {
+      ParamDecl::real("patch_size", 0.04, 0.002, 1.0,
+                      "longest patch edge, as a fraction of the scene's bounding-box diagonal"),
+      ParamDecl::choice("form_factors", "hemicube", {"hemicube", "analytic", "montecarlo"},
+                        "hemicube: ray-cast hemicube per patch; analytic: point-to-polygon contour integral "
+                        "times visibility; montecarlo: area-to-area point pairs"),
+      ParamDecl::integer("hemicube_res", 32, 4, 512, "hemicube cells along the top face's side"),
+      ParamDecl::integer("visibility_samples", 1, 1, 64, "analytic: visibility rays per patch pair"),
+      ParamDecl::integer("mc_samples", 16, 1, 4096, "montecarlo: point pairs per patch pair"),
+      ParamDecl::choice("solver", "gauss-seidel", {"gauss-seidel", "jacobi", "direct", "southwell"},
+                        "direct: dense LU (up to 3000 patches); jacobi/gauss-seidel: sweeps to the tolerance; "
+                        "southwell: progressive refinement (shoot the largest unshot power)"),
+      ParamDecl::real("tolerance", 1e-4, 1e-9, 0.5, "stop when the relative residual is below this"),
+      ParamDecl::integer("max_iterations", 1000, 1, 1000000, "iteration cap (southwell: N shots each)"),
+      ParamDecl::choice("show", "solution", {"solution", "bounce", "bounces"},
+                        "solution: B; bounce: the K-th term of L = E + KE + K^2E + ... alone; bounces: terms 0..K "
+                        "summed"),
+      ParamDecl::integer("bounce", 1, 0, 64, "K for show=bounce/bounces"),
+      ParamDecl::choice("interpolate", "gouraud", {"gouraud", "flat"},
+                        "gouraud: radiosity interpolated from the patch corners; flat: one value per patch"),
+      ParamDecl::choice("patch_accelerator", "bvh", {"bvh", "kdtree", "octree", "none"},
+                        "the accelerator over the patches for visibility rays and display"),
+      ParamDecl::integer("sphere_segments", 24, 6, 256, "tessellation of spheres into patches"),
+      ParamDecl::boolean("progressive", false,
+                         "progressive refinement (Cohen 1988): Southwell shooting with hemicube rows computed "
+                         "per shot; every pass shoots twice as many patches and redraws, the last to the "
+                         "tolerance (form_factors, solver and show do not apply)"),
+  };
+}
+
+// The display through the rasterizer of assignment 1: the patches as
+// triangles whose corners carry their radiosity, interpolated
+// perspective-correctly; the same picture as `radiosity` up to the
+// rasterizer's sampling. Runs the A1 pipeline (edge functions, z-buffer).
+class RadiosityRasterShader final : public a1::Shader {
+ public:
+  RadiosityRasterShader(const a5::PatchMesh& mesh, const std::vector<Rgb>& shown, const std::vector<Rgb>& corners,
+                        bool gouraud, const Mat4& viewProjection, Vec3 eye)
+      : mesh_(mesh), shown_(shown), corners_(corners), gouraud_(gouraud), viewProjection_(viewProjection), eye_(eye) {}
+  // Vertex k of patch k / 3.
+  Vec4 vertex(int index, int, a1::Varyings& out) const override {
+    const auto patch = static_cast<uint32_t>(index / 3);
+    const uint32_t v = mesh_.patches[patch].vertices[index % 3];
+    out.position = mesh_.positions[v];
+    out.diffuse = gouraud_ ? corners_[v] : shown_[patch];
+    return viewProjection_ * Vec4(out.position, 1.0f);
+  }
+  Rgb fragment(const a1::Fragment& f) const override {
+    if (glm::dot(f.faceNormal, eye_ - f.in.position) <= 0.0f) return Rgb(0.0f);  // the back of a patch
+    return f.in.diffuse / kPi;
+  }
+
+ private:
+  const a5::PatchMesh& mesh_;
+  const std::vector<Rgb>& shown_;
+  const std::vector<Rgb>& corners_;
+  bool gouraud_;
+  Mat4 viewProjection_;
+  Vec3 eye_;
+};
+
+class RadiosityRaster final : public Technique {
+ public:
+  int passCount(const RenderContext&) const override { return 1; }
+  void prepare(const RenderContext& ctx) override {
+    const ScopedTaskLog scope(ctx.taskLog);
+    settings_ = a5::radiositySettings(ctx.params);
+    settings_.progressive = false;
+    solved_ = a5::solveScene(ctx.scene, settings_);
+    for (const auto& [id, what] : solved_->missingTasks) reportMissingTask(id.c_str(), what.c_str());
+  }
+  void renderPass(const RenderContext& ctx, int, FrameBuffer& fb, WorkCounters& counters,
+                  const std::atomic<bool>& cancel) override {
+    const Camera camera = renderCamera(ctx.scene, ctx.settings);
+    const Bounds3 bounds = ctx.scene.geometry.sceneBounds();
+    const float reach = glm::length(bounds.center() - camera.eye) + bounds.diagonal();
+    const Mat4 viewProjection = glm::perspective(radians(camera.fovYDeg), camera.aspect(), reach * 1e-5f, reach) *
+                                glm::lookAt(camera.eye, camera.target, camera.up);
+    const RadiosityRasterShader shader(solved_->mesh(), solved_->shown, solved_->vertexShown,
+                                       ctx.params.getChoice("interpolate") == "gouraud", viewProjection, camera.eye);
+    a1::RasterSettings s;
+    s.width = fb.width();
+    s.height = fb.height();
+    const std::string& samples = ctx.params.getChoice("samples");
+    s.scale = samples == "16" ? 4 : samples == "4" ? 2 : 1;
+    s.background = ctx.scene.background;
+    s.taskLog = ctx.taskLog;
+    const int vertices = static_cast<int>(3 * solved_->mesh().patches.size());
+    counters.nonFinite += a1::rasterize(workspace_, shader, {a1::DrawCall{0, vertices, 0}}, s, fb, cancel);
+  }
+
+ private:
+  a5::RadiositySettings settings_;
+  std::shared_ptr<const a5::SolvedRadiosity> solved_;
+  a1::RasterWorkspace workspace_;
+};
+
 }  // namespace
 
 TechniqueInfo radiosityTechnique() {
   return {
       "radiosity",
       "radiosity: diffuse patches, form factors (hemicube, analytic, Monte Carlo), B = E + rho F B solved once "
-      "(direct, Jacobi, Gauss-Seidel, Southwell), shown with interpolated patch radiosities",
+      "(direct, Jacobi, Gauss-Seidel, Southwell, progressive), shown with interpolated patch radiosities by ray casting",
       EffectSet{Effect::DirectLighting, Effect::SoftShadows, Effect::HardShadows, Effect::DiffuseInterreflection,
                 Effect::Emission},
       3,
-      {
-          ParamDecl::real("patch_size", 0.04, 0.002, 1.0,
-                          "longest patch edge, as a fraction of the scene's bounding-box diagonal"),
-          ParamDecl::choice("form_factors", "hemicube", {"hemicube", "analytic", "montecarlo"},
-                            "hemicube: ray-cast hemicube per patch; analytic: point-to-polygon contour integral "
-                            "times visibility; montecarlo: area-to-area point pairs"),
-          ParamDecl::integer("hemicube_res", 32, 4, 512, "hemicube cells along the top face's side"),
-          ParamDecl::integer("visibility_samples", 1, 1, 64, "analytic: visibility rays per patch pair"),
-          ParamDecl::integer("mc_samples", 16, 1, 4096, "montecarlo: point pairs per patch pair"),
-          ParamDecl::choice("solver", "gauss-seidel", {"gauss-seidel", "jacobi", "direct", "southwell"},
-                            "direct: dense LU (up to 3000 patches); jacobi/gauss-seidel: sweeps to the tolerance; "
-                            "southwell: progressive refinement (shoot the largest unshot power)"),
-          ParamDecl::real("tolerance", 1e-4, 1e-9, 0.5, "stop when the relative residual is below this"),
-          ParamDecl::integer("max_iterations", 1000, 1, 1000000, "iteration cap (southwell: N shots each)"),
-          ParamDecl::choice("show", "solution", {"solution", "bounce", "bounces"},
-                            "solution: B; bounce: the K-th term of L = E + KE + K^2E + ... alone; bounces: terms 0..K "
-                            "summed"),
-          ParamDecl::integer("bounce", 1, 0, 64, "K for show=bounce/bounces"),
-          ParamDecl::choice("interpolate", "gouraud", {"gouraud", "flat"},
-                            "gouraud: radiosity interpolated from the patch corners; flat: one value per patch"),
-          ParamDecl::choice("patch_accelerator", "bvh", {"bvh", "kdtree", "octree", "none"},
-                            "the accelerator over the patches for visibility rays and display"),
-          ParamDecl::integer("sphere_segments", 24, 6, 256, "tessellation of spheres into patches"),
-          ParamDecl::boolean("progressive", false,
-                             "progressive refinement (Cohen 1988): Southwell shooting with hemicube rows computed "
-                             "per shot; every pass shoots twice as many patches and redraws, the last to the "
-                             "tolerance (form_factors, solver and show do not apply)"),
-      },
+      radiosityParams(),
       []() -> std::unique_ptr<Technique> { return std::make_unique<Radiosity>(); },
+  };
+}
+
+TechniqueInfo radiosityRasterTechnique() {
+  std::vector<ParamDecl> params = radiosityParams();
+  params.push_back(ParamDecl::choice("samples", "4", {"1", "4", "16"}, "supersamples per pixel of the rasterizer"));
+  return {
+      "radiosity-raster",
+      "radiosity's solution drawn by the software rasterizer of assignment 1 (the same solve as `radiosity`, "
+      "another display; progressive does not apply)",
+      EffectSet{Effect::DirectLighting, Effect::SoftShadows, Effect::HardShadows, Effect::DiffuseInterreflection,
+                Effect::Emission},
+      3,
+      params,
+      []() -> std::unique_ptr<Technique> { return std::make_unique<RadiosityRaster>(); },
   };
 }
 

@@ -27,4 +27,5 @@
   X(raycastTechnique)          \
   X(whittedTechnique)          \
   X(radiosityTechnique)        \
+  X(radiosityRasterTechnique)  \
   LIGHTLAB_GPU_TECHNIQUES(X)
