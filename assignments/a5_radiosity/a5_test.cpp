@@ -306,6 +306,28 @@ TEST(A5_Radiosity, ProgressiveRefinementConvergesToTheBatchSouthwellAndKeepsItsS
   EXPECT_EQ(a5::progressiveScene(scene, r).state.get(), p.state.get());
 }
 
+TEST(A5_Radiosity, AdaptiveRefinementSplitsOnlyWhereNeighboursDiffer) {
+  const Scene scene = loadScene(std::string(LIGHTLAB_DATA_DIR) + "/scenes/cornell_box.json");
+  a5::RadiositySettings r;
+  r.patchSize = 0.12f;
+  r.formFactors.hemicubeResolution = 16;
+  r.adaptivePasses = 2;
+  r.adaptiveThreshold = 0.3f;
+  const auto s = a5::solveScene(scene, r);
+  const std::vector<size_t>& n = s->patches->refinement;
+  ASSERT_GE(n.size(), 2u);
+  for (size_t k = 1; k < n.size(); ++k) EXPECT_GT(n[k], n[k - 1]);
+  EXPECT_LT(n.back(), 3 * n.front());  // local refinement, not everywhere
+  EXPECT_TRUE(s->solution.converged);
+  // The mesh stays conforming: every patch corner is shared only by patches of one object, and the
+  // refined patches' areas add up to the original surface.
+  double before = 0.0, after = 0.0;
+  r.adaptivePasses = 0;
+  for (const a5::Patch& p : a5::solveScene(scene, r)->mesh().patches) before += static_cast<double>(p.area);
+  for (const a5::Patch& p : s->mesh().patches) after += static_cast<double>(p.area);
+  EXPECT_NEAR(after, before, 1e-4 * before);
+}
+
 TEST(A5_Radiosity, TheRasterizerShowsTheSameSolutionAsRayCasting) {
   const Scene scene = loadScene(std::string(LIGHTLAB_DATA_DIR) + "/scenes/cornell_box.json");
   const AcceleratorInfo& a = findAccelerator("none");

@@ -89,37 +89,37 @@ float PatchMesh::totalArea() const {
   return a;
 }
 
-PatchMesh buildPatchMesh(const Scene& scene, float maxEdge, int sphereSegments) {
-  PatchMesh out;
-  for (uint32_t o = 0; o < scene.objects.size(); ++o) {
-    const SceneObject& object = scene.objects[o];
-    const Material& m = scene.materials[object.material];
-    OmMesh mesh;
-    addObjectTriangles(scene, object, sphereSegments, mesh);
-    splitLongEdges(mesh, maxEdge);
-    const auto base = static_cast<uint32_t>(out.positions.size());
-    for (const auto v : mesh.vertices()) out.positions.push_back(fromOm(mesh.point(v)));
-    for (const auto f : mesh.faces()) {
-      glm::uvec3 idx;
-      int k = 0;
-      for (const auto v : mesh.fv_range(f)) idx[k++] = base + static_cast<uint32_t>(v.idx());
-      Patch p;
-      p.object = o;
-      p.vertices = idx;
-      const Vec3 a = out.positions[idx.x], b = out.positions[idx.y], c = out.positions[idx.z];
-      const Vec3 cross = glm::cross(b - a, c - a);
-      p.area = 0.5f * glm::length(cross);
-      if (!(p.area > 0.0f)) continue;
-      p.normal = cross / (2.0f * p.area);
-      p.centre = (a + b + c) / 3.0f;
-      p.emission = kPi * m.emission;
-      p.reflectance = glm::clamp(m.kd, Rgb(0.0f), Rgb(1.0f));
-      if (m.texture.kind != Texture::Kind::None) p.reflectance = glm::clamp(m.diffuse(Vec2(0.5f)), Rgb(0.0f), Rgb(1.0f));
-      out.patches.push_back(p);
-    }
+namespace {
+
+// Appends object o's faces of `mesh` as patches (and its vertices).
+void appendObject(const Scene& scene, uint32_t o, const OmMesh& mesh, PatchMesh& out) {
+  const Material& m = scene.materials[scene.objects[o].material];
+  const auto base = static_cast<uint32_t>(out.positions.size());
+  for (const auto v : mesh.vertices()) out.positions.push_back(fromOm(mesh.point(v)));
+  for (const auto f : mesh.faces()) {
+    glm::uvec3 idx;
+    int k = 0;
+    for (const auto v : mesh.fv_range(f)) idx[k++] = base + static_cast<uint32_t>(v.idx());
+    Patch p;
+    p.object = o;
+    p.vertices = idx;
+    const Vec3 a = out.positions[idx.x], b = out.positions[idx.y], c = out.positions[idx.z];
+    const Vec3 cross = glm::cross(b - a, c - a);
+    p.area = 0.5f * glm::length(cross);
+    if (!(p.area > 0.0f)) continue;
+    p.normal = cross / (2.0f * p.area);
+    p.centre = (a + b + c) / 3.0f;
+    p.emission = kPi * m.emission;
+    p.reflectance = glm::clamp(m.kd, Rgb(0.0f), Rgb(1.0f));
+    if (m.texture.kind != Texture::Kind::None) p.reflectance = glm::clamp(m.diffuse(Vec2(0.5f)), Rgb(0.0f), Rgb(1.0f));
+    out.patches.push_back(p);
   }
-  // The Geometry view and the vertex -> patches table.
+}
+
+// The Geometry view and the vertex -> patches table of `out`'s patches.
+void finish(PatchMesh& out) {
   Geometry& g = out.geometry;
+  g = Geometry{};
   g.positions = out.positions;
   out.vertexPatches.assign(out.positions.size(), {});
   for (uint32_t i = 0; i < out.patches.size(); ++i) {
@@ -128,6 +128,65 @@ PatchMesh buildPatchMesh(const Scene& scene, float maxEdge, int sphereSegments) 
     g.triangleObject.push_back(p.object);
     for (int k = 0; k < 3; ++k) out.vertexPatches[p.vertices[k]].push_back(i);
   }
+}
+
+}  // namespace
+
+PatchMesh buildPatchMesh(const Scene& scene, float maxEdge, int sphereSegments) {
+  PatchMesh out;
+  for (uint32_t o = 0; o < scene.objects.size(); ++o) {
+    OmMesh mesh;
+    addObjectTriangles(scene, scene.objects[o], sphereSegments, mesh);
+    splitLongEdges(mesh, maxEdge);
+    appendObject(scene, o, mesh, out);
+  }
+  finish(out);
+  return out;
+}
+
+PatchMesh refinePatchMesh(const Scene& scene, const PatchMesh& mesh, const std::vector<uint8_t>& split) {
+  PatchMesh out;
+  for (uint32_t o = 0; o < scene.objects.size(); ++o) {
+    // The object's patches back into an OpenMesh mesh (they share their vertices).
+    OmMesh m;
+    std::map<uint32_t, OmMesh::VertexHandle> vertexOf;
+    std::vector<std::pair<OmMesh::FaceHandle, bool>> faces;
+    for (uint32_t i = 0; i < mesh.patches.size(); ++i) {
+      const Patch& p = mesh.patches[i];
+      if (p.object != o) continue;
+      OmMesh::VertexHandle h[3];
+      for (int k = 0; k < 3; ++k) {
+        auto it = vertexOf.find(p.vertices[k]);
+        if (it == vertexOf.end()) it = vertexOf.emplace(p.vertices[k], m.add_vertex(toOm(mesh.positions[p.vertices[k]]))).first;
+        h[k] = it->second;
+      }
+      OmMesh::FaceHandle f = m.add_face(h[0], h[1], h[2]);
+      if (!f.is_valid())
+        f = m.add_face(m.add_vertex(m.point(h[0])), m.add_vertex(m.point(h[1])), m.add_vertex(m.point(h[2])));
+      faces.emplace_back(f, split[i] != 0);
+    }
+    // The longest edge of every marked patch, each once; splitting it splits both triangles on it.
+    std::vector<OmMesh::EdgeHandle> edges;
+    for (const auto& [f, marked] : faces) {
+      if (!marked || !f.is_valid()) continue;
+      OmMesh::EdgeHandle longest;
+      float length = -1.0f;
+      for (const auto e : m.fe_range(f))
+        if (m.calc_edge_length(e) > length) {
+          length = m.calc_edge_length(e);
+          longest = e;
+        }
+      if (longest.is_valid()) edges.push_back(longest);
+    }
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    for (const auto e : edges) {
+      const auto h = m.halfedge_handle(e, 0);
+      m.split(e, 0.5f * (m.point(m.from_vertex_handle(h)) + m.point(m.to_vertex_handle(h))));
+    }
+    appendObject(scene, o, m, out);
+  }
+  finish(out);
   return out;
 }
 

@@ -42,4 +42,9 @@ struct PatchMesh {
 // Precondition: maxEdge > 0.
 PatchMesh buildPatchMesh(const Scene& scene, float maxEdge, int sphereSegments = 24);
 
+// Adaptive refinement: splits the longest edge of every patch i with
+// split[i] != 0 (and so the patch across that edge: the mesh stays
+// conforming); everything else is kept. Patch ids are renumbered.
+PatchMesh refinePatchMesh(const Scene& scene, const PatchMesh& mesh, const std::vector<uint8_t>& split);
+
 }  // namespace ll::a5

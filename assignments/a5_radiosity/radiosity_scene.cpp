@@ -54,7 +54,8 @@ std::string patchKey(const Scene& s, const RadiositySettings& r) {
   const FormFactorSettings& f = r.formFactors;
   return std::to_string(fingerprint(s)) + "|" + std::to_string(r.patchSize) + "|" + std::to_string(r.sphereSegments) +
          "|" + r.accelerator + "|" + methodName(f.method) + "|" + std::to_string(f.hemicubeResolution) + "|" +
-         std::to_string(f.visibilitySamples) + "|" + std::to_string(f.monteCarloSamples);
+         std::to_string(f.visibilitySamples) + "|" + std::to_string(f.monteCarloSamples) + "|" +
+         std::to_string(r.adaptivePasses) + "|" + std::to_string(r.adaptiveThreshold);
 }
 
 std::string solveKey(const std::string& patches, const RadiositySettings& r) {
@@ -71,11 +72,40 @@ std::shared_ptr<const PatchScene> computePatches(const Scene& scene, const Radio
   auto t = std::chrono::steady_clock::now();
   out->mesh = buildPatchMesh(scene, r.patchSize * scene.geometry.sceneBounds().diagonal(), r.sphereSegments);
   out->meshSeconds = since(t);
-  t = std::chrono::steady_clock::now();
+  out->refinement.push_back(out->mesh.patches.size());
   const AcceleratorInfo info = acceleratorNamed(r.accelerator);
-  out->accel = info.make(ParamSet(info.name, info.params));
-  out->accel->build(out->mesh.geometry);
-  out->accelSeconds = since(t);
+  const auto buildAccel = [&] {
+    t = std::chrono::steady_clock::now();
+    out->accel = info.make(ParamSet(info.name, info.params));
+    out->accel->build(out->mesh.geometry);
+    out->accelSeconds += since(t);
+  };
+  buildAccel();
+  for (int round = 0; round < r.adaptivePasses && formFactors; ++round) {
+    // Solve this mesh, then split where neighbouring patches (sharing a corner) differ too much.
+    const FormFactors f = computeFormFactors(out->mesh, *out->accel, r.formFactors);
+    const RadiositySystem system{out->mesh.patches, f};
+    SolverSettings quick = r.solver;
+    quick.method = SolverMethod::GaussSeidel;
+    const std::vector<Rgb> b = solveRadiosity(system, quick).radiosity;
+    std::vector<uint8_t> split(b.size(), 0);
+    size_t marked = 0;
+    for (uint32_t i = 0; i < b.size(); ++i)
+      for (int k = 0; k < 3; ++k)
+        for (const uint32_t j : out->mesh.vertexPatches[out->mesh.patches[i].vertices[k]]) {
+          const float brighter = std::max(maxComponent(b[i]), maxComponent(b[j]));
+          if (!split[i] && brighter > 0.0f && maxComponent(glm::abs(b[i] - b[j])) > r.adaptiveThreshold * brighter) {
+            split[i] = 1;
+            ++marked;
+          }
+        }
+    if (marked == 0) break;
+    t = std::chrono::steady_clock::now();
+    out->mesh = refinePatchMesh(scene, out->mesh, split);
+    out->meshSeconds += since(t);
+    out->refinement.push_back(out->mesh.patches.size());
+    buildAccel();
+  }
   if (!formFactors) return out;
   t = std::chrono::steady_clock::now();
   {
@@ -168,6 +198,8 @@ RadiositySettings radiositySettings(const ParamSet& p) {
                                : RadiositySettings::Show::Solution;
   r.bounce = p.getInt("bounce");
   r.progressive = p.getBool("progressive");
+  r.adaptivePasses = p.getInt("adaptive_passes");
+  r.adaptiveThreshold = static_cast<float>(p.getFloat("adaptive_threshold"));
   return r;
 }
 

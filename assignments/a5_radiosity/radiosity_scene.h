@@ -19,6 +19,11 @@ namespace ll::a5 {
 
 struct RadiositySettings {
   float patchSize = 0.04f;  // longest patch edge, as a fraction of the scene's bounding-box diagonal
+  // Adaptive refinement: this many rounds of (form factors, solve, split every
+  // patch whose radiosity differs from a neighbour's by more than the
+  // threshold, relative to the brighter), before the final form factors.
+  int adaptivePasses = 0;
+  float adaptiveThreshold = 0.25f;
   int sphereSegments = 24;
   std::string accelerator = "bvh";  // for the visibility rays (and the display)
   FormFactorSettings formFactors;
@@ -37,6 +42,7 @@ RadiositySettings radiositySettings(const ParamSet& params);
 // materials and the meshing/form-factor settings, not on the solver.
 struct PatchScene {
   PatchMesh mesh;
+  std::vector<size_t> refinement;  // patches after meshing and after each adaptive round
   std::unique_ptr<Accelerator> accel;  // over mesh.geometry
   FormFactors f;
   FormFactorDiagnostics diagnostics;

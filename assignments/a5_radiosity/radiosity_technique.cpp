@@ -111,6 +111,11 @@ std::vector<ParamDecl> radiosityParams() {
   return {
       ParamDecl::real("patch_size", 0.04, 0.002, 1.0,
                       "longest patch edge, as a fraction of the scene's bounding-box diagonal"),
+      ParamDecl::integer("adaptive_passes", 0, 0, 8,
+                         "adaptive refinement: rounds of solving and splitting patches whose radiosity differs "
+                         "from a neighbour's by more than adaptive_threshold"),
+      ParamDecl::real("adaptive_threshold", 0.25, 0.01, 10.0,
+                      "relative radiosity difference between neighbouring patches that splits them"),
       ParamDecl::choice("form_factors", "hemicube", {"hemicube", "analytic", "montecarlo"},
                         "hemicube: ray-cast hemicube per patch; analytic: point-to-polygon contour integral "
                         "times visibility; montecarlo: area-to-area point pairs"),

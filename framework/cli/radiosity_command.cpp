@@ -83,6 +83,11 @@ Command addRadiosityCommand(CLI::App& app, const GlobalOptions& global) {
     const a5::FormFactorDiagnostics& d = solved->diagnostics();
     const double finalResidual = sol.history.empty() ? 0.0 : sol.history.back().residual;
     const int iterations = sol.history.empty() ? 0 : sol.history.back().iteration;
+    if (solved->patches->refinement.size() > 1) {
+      std::printf("adaptive refinement: patches");
+      for (const size_t n : solved->patches->refinement) std::printf(" %zu", n);
+      std::printf("\n");
+    }
     std::printf("%zu patches (%.3f s), form factors %s: %zu non-zeros, %.3f s, row sums %.4f..%.4f (mean %.4f), "
                 "reciprocity error mean %.2g max %.2g\n",
                 solved->mesh().patches.size(), solved->patches->meshSeconds, a5::methodName(settings.formFactors.method).c_str(),
@@ -118,7 +123,10 @@ Command addRadiosityCommand(CLI::App& app, const GlobalOptions& global) {
     const nlohmann::json out = {
         {"scene", o->scene},
         {"parameters", s.techniqueParams.toJson()},
-        {"mesh", {{"patches", solved->mesh().patches.size()}, {"seconds", solved->patches->meshSeconds}}},
+        {"mesh",
+         {{"patches", solved->mesh().patches.size()},
+          {"seconds", solved->patches->meshSeconds},
+          {"refinement", solved->patches->refinement}}},
         {"form_factors",
          {{"method", a5::methodName(settings.formFactors.method)},
           {"seconds", solved->patches->formFactorSeconds},
