@@ -135,13 +135,12 @@ class BlinnPhongRaster final : public Technique {
     (void)pass;
     const ParamSet& p = ctx.params;
     const Camera camera = renderCamera(ctx.scene, ctx.settings);
-    // Depth range from the scene's bounds (as blinn-phong-gl).
-    const Bounds3 bounds = ctx.scene.geometry.sceneBounds();
-    const float reach = glm::length(bounds.center() - camera.eye) + bounds.diagonal();
+    // Depth range fitted to the scene's bounds (as blinn-phong-gl).
+    const DepthRange depth = rasterDepthRange(ctx.scene, camera);
     Mat4 viewProjection(1.0f);
     {
       const ScopedTaskLog log(ctx.taskLog);
-      viewProjection = a1::viewProjection(camera, reach * 1e-5f, reach);
+      viewProjection = a1::viewProjection(camera, depth.near, depth.far);
     }
     const std::string& shadingName = p.getChoice("shading");
     const Shading shading = shadingName == "flat"      ? Shading::Flat

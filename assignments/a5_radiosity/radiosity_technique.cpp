@@ -18,6 +18,7 @@
 
 #include "radiosity_scene.h"
 #include "rasterizer.h"
+#include "render/raster_scene.h"
 #include "render/technique.h"
 #include "scene/camera.h"
 
@@ -187,9 +188,8 @@ class RadiosityRaster final : public Technique {
   void renderPass(const RenderContext& ctx, int, FrameBuffer& fb, WorkCounters& counters,
                   const std::atomic<bool>& cancel) override {
     const Camera camera = renderCamera(ctx.scene, ctx.settings);
-    const Bounds3 bounds = ctx.scene.geometry.sceneBounds();
-    const float reach = glm::length(bounds.center() - camera.eye) + bounds.diagonal();
-    const Mat4 viewProjection = glm::perspective(radians(camera.fovYDeg), camera.aspect(), reach * 1e-5f, reach) *
+    const DepthRange depth = rasterDepthRange(ctx.scene, camera);
+    const Mat4 viewProjection = glm::perspective(radians(camera.fovYDeg), camera.aspect(), depth.near, depth.far) *
                                 glm::lookAt(camera.eye, camera.target, camera.up);
     const RadiosityRasterShader shader(solved_->mesh(), solved_->shown, solved_->vertexShown,
                                        ctx.params.getChoice("interpolate") == "gouraud", viewProjection, camera.eye);

@@ -180,11 +180,10 @@ class BlinnPhongGl final : public Technique {
                           reinterpret_cast<void*>(offsetof(RasterVertex, uv)));
 
     // Camera: the scene's pinhole; depth range from the scene's bounds.
-    const Bounds3 bounds = ctx.scene.geometry.sceneBounds();
-    const float reach = glm::length(bounds.center() - camera.eye) + bounds.diagonal();
+    const DepthRange clip = rasterDepthRange(ctx.scene, camera);
     const glm::mat4 view = glm::lookAt(camera.eye, camera.target, camera.up);
     const glm::mat4 projection =
-        glm::perspective(glm::radians(camera.fovYDeg), camera.aspect(), reach * 1e-5f, reach);
+        glm::perspective(glm::radians(camera.fovYDeg), camera.aspect(), clip.near, clip.far);
     const glm::mat4 viewProjection = projection * view;
 
     glViewport(0, 0, w, h);

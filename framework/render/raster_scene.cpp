@@ -70,4 +70,21 @@ std::vector<RasterLight> rasterLights(const Scene& scene, int areaSamples) {
   return lights;
 }
 
+DepthRange rasterDepthRange(const Scene& scene, const Camera& camera) {
+  const Bounds3 b = scene.geometry.sceneBounds();
+  const Vec3 forward = glm::normalize(camera.target - camera.eye);
+  float zMin = kInfinity, zMax = -kInfinity;
+  for (int corner = 0; corner < 8; ++corner) {
+    const Vec3 p((corner & 1) ? b.max.x : b.min.x, (corner & 2) ? b.max.y : b.min.y, (corner & 4) ? b.max.z : b.min.z);
+    const float z = glm::dot(p - camera.eye, forward);
+    zMin = std::min(zMin, z);
+    zMax = std::max(zMax, z);
+  }
+  DepthRange r;
+  if (b.empty() || !(zMax > 0.0f)) return r;  // nothing in front of the camera: any range will do
+  r.far = 1.01f * zMax;
+  r.near = std::max(0.99f * zMin, 1e-3f * r.far);
+  return r;
+}
+
 }  // namespace ll

@@ -41,4 +41,17 @@ struct RasterLight {
 // scene.sampleAreaLight.
 std::vector<RasterLight> rasterLights(const Scene& scene, int areaSamples);
 
+// Near and far clip distances (world units, along the view direction) fitted
+// to the scene's bounding box as seen from `camera`: the box's nearest and
+// farthest depth, with a 1 % margin. A depth buffer stores about 1/z, so its
+// resolution at distance z is about z^2 / near: a near plane far closer than
+// the geometry (a fixed 1e-5 of the scene's reach) lets a light quad 0.5 mm
+// below the Cornell box's ceiling lose to the ceiling in a tenth of its
+// pixels. When the camera is inside the box, near is 1e-3 of far.
+struct DepthRange {
+  float near = 0.01f;
+  float far = 100.0f;
+};
+DepthRange rasterDepthRange(const Scene& scene, const Camera& camera);
+
 }  // namespace ll
