@@ -25,8 +25,6 @@ class Raycast final : public PixelTechnique {
   void prepare(const RenderContext& ctx) override {
     camera_ = renderCamera(ctx.scene, ctx.settings);
     lightSamples_ = ctx.params.getInt("light_samples");
-    hardShadows_ = ctx.scene.effects.has(Effect::HardShadows);
-    softShadows_ = ctx.scene.effects.has(Effect::SoftShadows);
     student_.reset();
     if (ctx.params.getChoice("intersection") == "student") {
       student_ = a2::makeStudentIntersector();
@@ -67,7 +65,7 @@ class Raycast final : public PixelTechnique {
         in.distance = kInfinity;
         in.l = -light.direction;
       }
-      radiance += shade(tracer, sp, surface, in, hardShadows_);
+      radiance += shade(tracer, sp, surface, in, light.canBeOccluded);
     }
 
     for (const AreaLight& light : scene.areaLights) {
@@ -82,7 +80,7 @@ class Raycast final : public PixelTechnique {
         const float cosLight = glm::dot(lp.normal, -in.l);
         if (cosLight <= 0.0f) continue;  // behind the emitting side
         in.intensity = lp.emission * (light.area / static_cast<float>(lightSamples_)) * cosLight / kPi;
-        radiance += shade(tracer, sp, surface, in, softShadows_);
+        radiance += shade(tracer, sp, surface, in, light.canBeOccluded);
       }
     }
     return radiance;
@@ -99,7 +97,6 @@ class Raycast final : public PixelTechnique {
 
   Camera camera_;
   int lightSamples_ = 16;
-  bool hardShadows_ = true, softShadows_ = true;
   std::unique_ptr<Accelerator> student_;
 };
 

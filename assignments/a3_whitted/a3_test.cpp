@@ -418,6 +418,37 @@ TEST(A3_Whitted, NoShadowRaysWhereNothingCanCastAShadow) {
   EXPECT_GT(rays(render(shadowed, "whitted", {}, 32, 32).stats, RayKind::Shadow), 0u);
 }
 
+TEST(A3_Whitted, ShadowRaysOnlyForTheLightsSomethingCanOcclude) {
+  // Two spheres far apart: light A between them lights each without anything in between; light B beyond
+  // the right sphere can be blocked by it on its way to the left one.
+  const auto scene = [](const std::string& lights) {
+    return parseJsonScene(R"({"camera": {"eye": [0, 0, 12], "target": [0, 0, 0], "up": [0, 1, 0], "fov_y_deg": 40,
+      "width": 32, "height": 32}, "materials": {"grey": {"kd": [0.5, 0.5, 0.5]}},
+      "lights": [)" + lights + R"(], "objects": [
+      {"type": "sphere", "material": "grey", "center": [-2, 0, 0], "radius": 0.5},
+      {"type": "sphere", "material": "grey", "center": [2, 0, 0], "radius": 0.5}]})",
+                          "test.json", std::string(LIGHTLAB_DATA_DIR) + "/scenes");
+  };
+  const std::string a = R"({"type": "point", "position": [0, 0, 0], "intensity": [5, 5, 5]})";
+  const std::string b = R"({"type": "point", "position": [6, 0, 0], "intensity": [5, 5, 5]})";
+  const Scene onlyA = scene(a), onlyB = scene(b), both = scene(a + ", " + b);
+  EXPECT_FALSE(onlyA.lights[0].canBeOccluded);
+  EXPECT_TRUE(onlyB.lights[0].canBeOccluded);
+  EXPECT_FALSE(onlyA.effects.has(Effect::HardShadows));
+  EXPECT_TRUE(both.effects.has(Effect::HardShadows));
+  const Rendered ra = render(onlyA, "whitted", {}, 32, 32), rb = render(onlyB, "whitted", {}, 32, 32);
+  const Rendered rab = render(both, "whitted", {}, 32, 32);
+  EXPECT_EQ(rays(ra.stats, RayKind::Shadow), 0u);
+  EXPECT_GT(rays(rb.stats, RayKind::Shadow), 0u);
+  EXPECT_EQ(rays(rab.stats, RayKind::Shadow), rays(rb.stats, RayKind::Shadow));  // none for A
+  const Rendered cast = render(both, "raycast", {{"intersection", "framework"}}, 32, 32);
+  EXPECT_EQ(rays(cast.stats, RayKind::Shadow), rays(rb.stats, RayKind::Shadow));
+  for (int y = 0; y < 32; ++y)
+    for (int x = 0; x < 32; ++x)
+      for (int c = 0; c < 3; ++c)
+        ASSERT_NEAR(rab.image.at(x, y)[c], ra.image.at(x, y)[c] + rb.image.at(x, y)[c], 1e-5f) << x << "," << y;
+}
+
 TEST(A3_Whitted, DepthZeroIsRayCastingAndDeeperAddsReflections) {
   const Scene scene = loadScene(std::string(LIGHTLAB_DATA_DIR) + "/scenes/whitted_1980.json");
   const Rendered flat = render(scene, "whitted", {{"max_depth", "0"}}, 64, 48);

@@ -45,8 +45,6 @@ WhittedTracer::WhittedTracer(const Scene& scene, const Tracer& tracer, const Whi
       settings_(settings),
       rng_(rng),
       tree_(tree),
-      hardShadows_(scene.effects.has(Effect::HardShadows)),
-      softShadows_(scene.effects.has(Effect::SoftShadows)),
       transmissive_(scene.effects.has(Effect::Refraction)) {}
 
 float WhittedTracer::iorOf(const Media& media) const {
@@ -174,9 +172,9 @@ Rgb WhittedTracer::local(const Surface& s) const {
       if (light.type == Light::Type::Point) {
         const Vec3 d = light.position - s.sp.position;
         const float distance = glm::length(d);
-        radiance += lightTerm(s, d / distance, distance, light.intensity, hardShadows_);
+        radiance += lightTerm(s, d / distance, distance, light.intensity, light.canBeOccluded);
       } else {
-        radiance += lightTerm(s, -light.direction, kInfinity, light.intensity, hardShadows_);
+        radiance += lightTerm(s, -light.direction, kInfinity, light.intensity, light.canBeOccluded);
       }
     }
     const int n = settings_.lightSamples;
@@ -191,7 +189,7 @@ Rgb WhittedTracer::local(const Surface& s) const {
         const float cosLight = glm::dot(lp.normal, -l);
         if (cosLight <= 0.0f) continue;  // behind the emitting side
         const Rgb intensity = lp.emission * (light.area / static_cast<float>(n)) * cosLight / kPi;
-        radiance += lightTerm(s, l, distance, intensity, softShadows_);
+        radiance += lightTerm(s, l, distance, intensity, light.canBeOccluded);
       }
     }
   }

@@ -107,7 +107,7 @@ class WhittedTracer {
   WhittedSettings settings_;
   Rng& rng_;
   RayTree* tree_;
-  bool hardShadows_, softShadows_, transmissive_;
+  bool transmissive_;  // shadow rays pass through transmissive surfaces only if some material transmits
 };
 
 }  // namespace ll::a3

@@ -6,13 +6,39 @@ namespace ll {
 
 namespace {
 
-// Can anything in the scene block light on its way to a surface? A single
-// convex or planar object cannot shadow itself; anything more can.
-bool canOcclude(const Scene& s) {
-  if (s.objects.size() > 1) return true;
-  if (s.objects.empty()) return false;
-  const std::string& t = s.objects[0].type;
-  return !(t == "sphere" || t == "quad" || t == "polygon");
+// A convex or planar object cannot shadow itself.
+bool selfShadowing(const SceneObject& o) { return !(o.type == "sphere" || o.type == "quad" || o.type == "polygon"); }
+
+Bounds3 objectBounds(const Scene& s, const SceneObject& o) {
+  Bounds3 b;
+  for (uint32_t p = o.firstPrim; p < o.firstPrim + o.primCount; ++p) b.extend(s.geometry.bounds(p));
+  return b;
+}
+
+bool overlap(const Bounds3& a, const Bounds3& b) {
+  return !(a.empty() || b.empty()) && a.min.x <= b.max.x && b.min.x <= a.max.x && a.min.y <= b.max.y &&
+         b.min.y <= a.max.y && a.min.z <= b.max.z && b.min.z <= a.max.z;
+}
+
+// Can some object block light travelling from `source` (a box around the
+// light; empty for a directional light) to a point of some receiver? A
+// blocker must touch the box spanned by the receiver and the source
+// (conservative; for directional lights any other object may block). The
+// emitting object `emitter` (or none) blocks only if it can shadow itself.
+bool lightCanBeOccluded(const Scene& s, const std::vector<Bounds3>& boxes, const Bounds3& source,
+                        uint32_t emitter) {
+  for (uint32_t r = 0; r < s.objects.size(); ++r) {
+    if (s.objects[r].primCount == 0) continue;
+    if (selfShadowing(s.objects[r])) return true;
+    Bounds3 span = boxes[r];
+    span.extend(source);
+    for (uint32_t o = 0; o < s.objects.size(); ++o) {
+      if (o == r || s.objects[o].primCount == 0) continue;
+      if (o == emitter && !selfShadowing(s.objects[o])) continue;
+      if (source.empty() || overlap(span, boxes[o])) return true;
+    }
+  }
+  return false;
 }
 
 EffectSet analyseEffects(const Scene& s) {
@@ -22,10 +48,12 @@ EffectSet analyseEffects(const Scene& s) {
     if (o.primCount > 0) used[o.material] = true;
   const bool hasLights = !s.lights.empty();
   const bool hasAreaLights = !s.areaLights.empty();
-  const bool occluders = canOcclude(s);
+  bool hardShadows = false, softShadows = false;
+  for (const Light& l : s.lights) hardShadows = hardShadows || l.canBeOccluded;
+  for (const AreaLight& l : s.areaLights) softShadows = softShadows || l.canBeOccluded;
   if (hasLights || hasAreaLights) e.add(Effect::DirectLighting);
-  if (hasLights && occluders) e.add(Effect::HardShadows);
-  if (hasAreaLights && occluders) e.add(Effect::SoftShadows);
+  if (hardShadows) e.add(Effect::HardShadows);
+  if (softShadows) e.add(Effect::SoftShadows);
   bool diffuse = false;
   for (size_t i = 0; i < s.materials.size(); ++i) {
     if (!used[i]) continue;
@@ -37,7 +65,10 @@ EffectSet analyseEffects(const Scene& s) {
     if (m.emits()) e.add(Effect::Emission);
     if (!isBlack(m.kd) || m.texture.kind == Texture::Kind::Checker) diffuse = true;
   }
-  if (diffuse && (hasLights || hasAreaLights) && occluders) e.add(Effect::DiffuseInterreflection);
+  // Light bouncing between surfaces needs two surfaces that see each other: as for shadows, more than one
+  // convex object.
+  const bool interreflects = s.objects.size() > 1 || (s.objects.size() == 1 && selfShadowing(s.objects[0]));
+  if (diffuse && (hasLights || hasAreaLights) && interreflects) e.add(Effect::DiffuseInterreflection);
   return e;
 }
 
@@ -61,6 +92,15 @@ void Scene::finalize() {
     }
     if (light.area > 0.0f) areaLights.push_back(std::move(light));
   }
+  std::vector<Bounds3> boxes;
+  for (const SceneObject& o : objects) boxes.push_back(objectBounds(*this, o));
+  const auto none = static_cast<uint32_t>(objects.size());
+  for (Light& l : lights) {
+    Bounds3 source;
+    if (l.type == Light::Type::Point) source.extend(l.position);
+    l.canBeOccluded = lightCanBeOccluded(*this, boxes, source, none);
+  }
+  for (AreaLight& l : areaLights) l.canBeOccluded = lightCanBeOccluded(*this, boxes, boxes[l.object], l.object);
   effects = analyseEffects(*this);
 }
 

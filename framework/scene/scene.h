@@ -20,6 +20,9 @@ struct Light {
   Vec3 position{0.0f};                   // point lights, world space
   Vec3 direction{0.0f, -1.0f, 0.0f};     // directional lights: unit, the way light travels
   Rgb intensity{1.0f};                   // lecture units: diffuse radiance = kd * I * cos / r^2
+  // Whether anything can stand between this light and a surface it lights
+  // (set by Scene::finalize): if not, techniques cast no shadow rays for it.
+  bool canBeOccluded = true;
 };
 
 struct SceneObject {
@@ -36,6 +39,7 @@ struct AreaLight {
   std::vector<float> cdf;  // cumulative area, last entry = area
   float area = 0.0f;       // scene units^2
   Rgb emission{0.0f};      // radiance
+  bool canBeOccluded = true;  // see Light::canBeOccluded
 };
 
 // A point sampled on an area light, with density 1/area (w.r.t. area).
