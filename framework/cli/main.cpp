@@ -1,4 +1,4 @@
-// The `lightlab` command line: render, info, trace, compare, and gui when built with it.
+// The `lightlab` command line: render, info, trace, compare, radiosity, grade, and gui when built with it.
 // Any bad input ends with one line on stderr and a non-zero exit status.
 #include <cstdio>
 #include <exception>
@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
       {"trace", addTraceCommand(app, global)},
       {"compare", addCompareCommand(app, global)},
       {"radiosity", addRadiosityCommand(app, global)},
+      {"grade", addGradeCommand(app, global)},
   };
 #ifdef LIGHTLAB_HAVE_GUI
   commands["gui"] = addGuiCommand(app, global);

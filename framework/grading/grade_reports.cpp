@@ -1,0 +1,327 @@
+// Scores, the terminal table, JUnit XML and Gradescope's results.json.
+// The HTML report is in html_report.cpp.
+#include "grading/grade_reports.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/error.h"
+
+namespace ll::grading {
+
+namespace {
+
+// Up to `decimals` decimals without trailing zeros: 73.5, 100, 3.33.
+std::string formatNumber(double v, int decimals = 2) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  std::string s = buf;
+  if (s.find('.') != std::string::npos) {
+    while (!s.empty() && s.back() == '0') s.pop_back();
+    if (!s.empty() && s.back() == '.') s.pop_back();
+  }
+  if (s == "-0") s = "0";
+  return s;
+}
+
+std::string formatFixed(double v, int decimals) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  return buf;
+}
+
+// "A2 Ray casting" (or just "A2" without a title).
+std::string assignmentName(const GradeResult& result) {
+  return result.title.empty() ? result.assignment : result.assignment + " " + result.title;
+}
+
+// Columns a UTF-8 string takes (code points; good enough for titles).
+size_t displayWidth(const std::string& s) {
+  size_t n = 0;
+  for (char c : s)
+    if ((static_cast<unsigned char>(c) & 0xC0) != 0x80) ++n;
+  return n;
+}
+
+std::string padRight(const std::string& s, size_t width) {
+  size_t w = displayWidth(s);
+  return w >= width ? s : s + std::string(width - w, ' ');
+}
+
+std::string padLeft(const std::string& s, size_t width) {
+  size_t w = displayWidth(s);
+  return w >= width ? s : std::string(width - w, ' ') + s;
+}
+
+const char* statusColour(Status s) {
+  switch (s) {
+    case Status::Passed:
+      return "\x1b[32m";
+    case Status::Failed:
+      return "\x1b[31m";
+    case Status::NotImplemented:
+      return "\x1b[33m";
+    case Status::Error:
+      return "\x1b[31m";
+  }
+  return "";
+}
+
+std::string coloured(const std::string& text, Status s, bool colour) {
+  return colour ? statusColour(s) + text + "\x1b[0m" : text;
+}
+
+double totalWeight(const TaskResult& task) {
+  double w = 0.0;
+  for (const TestResult& t : task.tests) w += t.weight;
+  return w;
+}
+
+double round4(double v) {
+  return std::round(v * 1e4) / 1e4;
+}
+
+// Escapes for XML attributes (line breaks as character references) or element text
+// (`text`: line breaks kept); drops the control characters XML 1.0 forbids.
+std::string xmlEscape(const std::string& s, bool text = false) {
+  std::string out;
+  out.reserve(s.size());
+  for (char c : s) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&apos;";
+        break;
+      case '\n':
+        out += text ? "\n" : "&#10;";
+        break;
+      case '\r':
+        out += "&#13;";
+        break;
+      case '\t':
+        out += text ? "\t" : "&#9;";
+        break;
+      default:
+        if (static_cast<unsigned char>(c) >= 0x20) out += c;
+    }
+  }
+  return out;
+}
+
+void writeFile(const std::string& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  if (!out) throwUserError("cannot write " + path);
+  out.write(text.data(), static_cast<std::streamsize>(text.size()));
+  out.close();
+  if (!out) throwUserError("cannot write " + path);
+}
+
+}  // namespace
+
+const char* statusName(Status s) {
+  switch (s) {
+    case Status::Passed:
+      return "passed";
+    case Status::Failed:
+      return "failed";
+    case Status::NotImplemented:
+      return "not implemented";
+    case Status::Error:
+      return "error";
+  }
+  return "error";
+}
+
+void finalizeScores(GradeResult& result) {
+  result.score = 0.0;
+  result.maxScore = 0.0;
+  for (TaskResult& task : result.tasks) {
+    double all = 0.0, passed = 0.0;
+    bool allPassed = !task.tests.empty(), notImplemented = false, error = false;
+    for (const TestResult& t : task.tests) {
+      all += t.weight;
+      if (t.status == Status::Passed) passed += t.weight;
+      allPassed = allPassed && t.status == Status::Passed;
+      notImplemented = notImplemented || t.status == Status::NotImplemented;
+      error = error || t.status == Status::Error;
+    }
+    // A task whose stub ran anywhere scores nothing: tests that its fallback passes earn no points.
+    task.score = all > 0.0 && !notImplemented ? task.points * passed / all : 0.0;
+    task.status = allPassed        ? Status::Passed
+                  : notImplemented ? Status::NotImplemented
+                  : error          ? Status::Error
+                                   : Status::Failed;
+    result.score += task.score;
+    result.maxScore += task.points;
+  }
+}
+
+void writeTextReport(const GradeResult& result, std::FILE* out, bool colour) {
+  const std::string bold = colour ? "\x1b[1m" : "", reset = colour ? "\x1b[0m" : "";
+  std::fprintf(out, "%s%s: %s / %s points%s (seed %u, %s s)\n", bold.c_str(),
+               assignmentName(result).c_str(), formatNumber(result.score).c_str(),
+               formatNumber(result.maxScore).c_str(), reset.c_str(), result.seed,
+               formatFixed(result.seconds, 1).c_str());
+
+  size_t idWidth = 0, titleWidth = 0, scoreWidth = 0;
+  std::vector<std::string> scores;
+  for (const TaskResult& task : result.tasks) {
+    scores.push_back(formatNumber(task.score) + "/" + formatNumber(task.points));
+    idWidth = std::max(idWidth, displayWidth(task.id));
+    titleWidth = std::max(titleWidth, displayWidth(task.title));
+    scoreWidth = std::max(scoreWidth, displayWidth(scores.back()));
+  }
+
+  for (size_t i = 0; i < result.tasks.size(); ++i) {
+    const TaskResult& task = result.tasks[i];
+    std::fprintf(out, "  %s  %s  %s  %s\n", padRight(task.id, idWidth).c_str(),
+                 padRight(task.title, titleWidth).c_str(), padLeft(scores[i], scoreWidth).c_str(),
+                 coloured(statusName(task.status), task.status, colour).c_str());
+    if (task.status == Status::Passed) continue;
+    if (task.tests.empty()) {
+      std::fputs("      (no tests)\n", out);
+      continue;
+    }
+    // Identical messages (a stub fails every test alike) are printed once with a count.
+    std::vector<std::pair<const TestResult*, int>> lines;
+    for (const TestResult& t : task.tests) {
+      if (t.status == Status::Passed) continue;
+      auto same = std::find_if(lines.begin(), lines.end(), [&t](const auto& l) {
+        return l.first->status == t.status && !t.message.empty() && l.first->message == t.message;
+      });
+      if (same != lines.end()) {
+        ++same->second;
+      } else {
+        lines.emplace_back(&t, 1);
+      }
+    }
+    for (const auto& [t, count] : lines) {
+      std::string message = t->message.empty() ? t->name : t->message;
+      // Continuation lines stay under the message.
+      const std::string indent = "\n" + std::string(8 + displayWidth(statusName(t->status)), ' ');
+      for (size_t pos = 0; (pos = message.find('\n', pos)) != std::string::npos;) {
+        message.replace(pos, 1, indent);
+        pos += indent.size();
+      }
+      if (count > 1) message += " (" + std::to_string(count) + " tests)";
+      std::fprintf(out, "      %s: %s\n",
+                   coloured(statusName(t->status), t->status, colour).c_str(), message.c_str());
+    }
+  }
+}
+
+void writeJUnitReport(const GradeResult& result, const std::string& path) {
+  struct Counts {
+    int tests = 0, failures = 0, errors = 0;
+    double seconds = 0.0;
+  };
+  auto count = [](const TaskResult& task) {
+    Counts c;
+    for (const TestResult& t : task.tests) {
+      ++c.tests;
+      if (t.status == Status::Failed || t.status == Status::NotImplemented) ++c.failures;
+      if (t.status == Status::Error) ++c.errors;
+      c.seconds += t.seconds;
+    }
+    return c;
+  };
+
+  Counts total;
+  for (const TaskResult& task : result.tasks) {
+    Counts c = count(task);
+    total.tests += c.tests;
+    total.failures += c.failures;
+    total.errors += c.errors;
+  }
+
+  std::string xml = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  xml += "<testsuites name=\"" + xmlEscape(result.assignment) + "\" tests=\"" +
+         std::to_string(total.tests) + "\" failures=\"" + std::to_string(total.failures) +
+         "\" errors=\"" + std::to_string(total.errors) + "\" time=\"" +
+         formatFixed(result.seconds, 3) + "\">\n";
+  for (const TaskResult& task : result.tasks) {
+    Counts c = count(task);
+    const std::string suite = task.title.empty() ? task.id : task.id + " " + task.title;
+    xml += "  <testsuite name=\"" + xmlEscape(suite) + "\" tests=\"" + std::to_string(c.tests) +
+           "\" failures=\"" + std::to_string(c.failures) + "\" errors=\"" +
+           std::to_string(c.errors) + "\" time=\"" + formatFixed(c.seconds, 3) + "\">\n";
+    for (const TestResult& t : task.tests) {
+      xml += "    <testcase classname=\"" + xmlEscape(task.id) + "\" name=\"" + xmlEscape(t.name) +
+             "\" time=\"" + formatFixed(t.seconds, 3) + "\"";
+      if (t.status == Status::Passed) {
+        xml += "/>\n";
+        continue;
+      }
+      const std::string message = t.message.empty() ? statusName(t.status) : t.message;
+      if (t.status == Status::Error) {
+        xml += ">\n      <error message=\"" + xmlEscape(message) + "\" type=\"error\">";
+        xml += xmlEscape(t.details, true) + "</error>\n";
+      } else {
+        xml += ">\n      <failure message=\"" + xmlEscape(message) + "\" type=\"" +
+               statusName(t.status) + "\">";
+        xml += xmlEscape(t.details, true) + "</failure>\n";
+      }
+      xml += "    </testcase>\n";
+    }
+    xml += "  </testsuite>\n";
+  }
+  xml += "</testsuites>\n";
+  writeFile(path, xml);
+}
+
+void writeGradescopeReport(const GradeResult& result, const std::string& path) {
+  using nlohmann::json;
+  int tasksPassed = 0;
+  json tests = json::array();
+  for (const TaskResult& task : result.tasks) {
+    if (task.status == Status::Passed) ++tasksPassed;
+    const double all = totalWeight(task);
+    for (const TestResult& t : task.tests) {
+      const double maxScore = all > 0.0 ? task.points * t.weight / all : 0.0;
+      // As finalizeScores: nothing for a task whose stub ran.
+      const bool passed = t.status == Status::Passed && task.status != Status::NotImplemented;
+      std::string output = t.message;
+      if (!t.details.empty()) output += (output.empty() ? "" : "\n") + t.details;
+      tests.push_back({
+          {"name", t.name},
+          {"number", task.id},
+          {"score", passed ? round4(maxScore) : 0.0},
+          {"max_score", round4(maxScore)},
+          {"status", passed ? "passed" : "failed"},
+          {"output", output},
+      });
+    }
+  }
+  json doc = {
+      {"score", round4(result.score)},
+      {"execution_time", static_cast<int>(std::lround(result.seconds))},
+      {"output", assignmentName(result) + ": " + formatNumber(result.score) + " / " +
+                     formatNumber(result.maxScore) + " points, " + std::to_string(tasksPassed) +
+                     " of " + std::to_string(result.tasks.size()) + " tasks passed (seed " +
+                     std::to_string(result.seed) + ")"},
+      {"visibility", "visible"},
+      {"tests", tests},
+  };
+  // Invalid UTF-8 in test output is replaced rather than thrown on.
+  writeFile(path, doc.dump(2, ' ', false, json::error_handler_t::replace) + "\n");
+}
+
+}  // namespace ll::grading
