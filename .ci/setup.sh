@@ -13,7 +13,7 @@ build=${LIGHTLAB_BUILD_DIR:-$root/build}
 jobs=$(nproc 2>/dev/null || echo 2)
 
 packages=(
-  build-essential cmake ninja-build ccache pkg-config git python3 python3-jsonschema
+  build-essential cmake ninja-build ccache pkg-config git patch python3 python3-jsonschema
   libglfw3-dev libimgui-dev libglm-dev libstb-dev libopenmesh-dev libtinyobjloader-dev libeigen3-dev
   nlohmann-json3-dev libcli11-dev libtbb-dev libgtest-dev libbenchmark-dev libembree-dev
   unifdef xvfb xauth xdotool libgl1-mesa-dri fonts-dejavu-core
@@ -31,6 +31,9 @@ if [ ${#missing[@]} -gt 0 ]; then
   "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
 
+# Copies of the tree that the tests build (student tree, planted bugs) sit at
+# <copy>/build like this one at <root>/build: relative paths make ccache reuse objects.
+export CCACHE_BASEDIR=$root
 werror=OFF
 [ "${CI:-}" = "true" ] && werror=ON
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER_LAUNCHER=ccache \

@@ -14,6 +14,7 @@
 
 #include "core/image.h"
 #include "metrics/image_metrics.h"
+#include "metrics/pixel_ztest.h"
 #include "modules/registry.h"
 #include "render/render_job.h"
 #include "scene/json_document.h"
@@ -24,7 +25,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-Image renderEntry(const nlohmann::json& entry, const nlohmann::json& set, const std::string& techniqueName) {
+Image renderEntry(const nlohmann::json& entry, const nlohmann::json& set, const std::string& techniqueName,
+                  unsigned seed = 1) {
   const Scene scene = loadScene(std::string(LIGHTLAB_DATA_DIR) + "/" + entry.at("scene").get<std::string>());
   const AcceleratorInfo& a = findAccelerator("none");
   const auto accel = buildAccelerator(a, ParamSet(a.name, a.params), scene.geometry);
@@ -34,6 +36,7 @@ Image renderEntry(const nlohmann::json& entry, const nlohmann::json& set, const 
   RenderSettings settings;
   settings.width = entry.at("size").at(0).get<int>();
   settings.height = entry.at("size").at(1).get<int>();
+  settings.seed = seed;
   const auto technique = t.make();
   RenderJob job(scene, *accel, *technique, params, settings);
   job.run();
@@ -54,6 +57,57 @@ bool withinTolerance(const ImageError& error, const nlohmann::json& entry, std::
   return ok;
 }
 
+// A Monte Carlo entry ("variance" names its variance image): the reference is
+// the mean of `renders` renders with seeds 1000, 1001, ...; the variance image
+// holds the variance of one render's pixel, times (1 + 1/renders) for the
+// mean's own noise. A render with any other seed passes the per-pixel Z-test;
+// each catch (parameter changes, or "scale": a brightness error) fails it.
+void checkStatistical(const std::string& dir, const nlohmann::json& entry, const std::string& technique, bool update) {
+  const std::string meanPath = dir + entry.at("image").get<std::string>();
+  const std::string variancePath = dir + entry.at("variance").get<std::string>();
+  if (update) {
+    const int n = entry.at("renders").get<int>();
+    std::vector<Image> renders;
+    for (int k = 0; k < n; ++k) renders.push_back(renderEntry(entry, entry.at("set"), technique, 1000u + static_cast<unsigned>(k)));
+    Image mean(renders[0].width(), renders[0].height()), variance = mean;
+    for (size_t i = 0; i < mean.pixelCount(); ++i) {
+      glm::dvec3 sum(0.0), sum2(0.0);
+      for (const Image& r : renders) {
+        const glm::dvec3 v(r.pixels()[i]);
+        sum += v;
+        sum2 += v * v;
+      }
+      const glm::dvec3 m = sum / static_cast<double>(n);
+      const glm::dvec3 var = glm::max(glm::dvec3(0.0), (sum2 - static_cast<double>(n) * m * m) / static_cast<double>(n - 1));
+      mean.pixels()[i] = Rgb(m);
+      variance.pixels()[i] = Rgb(var * (1.0 + 1.0 / static_cast<double>(n)));
+    }
+    saveImage(mean, meanPath);
+    saveImage(variance, variancePath);
+    return;
+  }
+  const Image mean = loadImage(meanPath), variance = loadImage(variancePath);
+  ZTestSettings z;
+  z.alpha = entry.at("ztest").value("alpha", 0.01);
+  for (const unsigned seed : {1u, 2u, 3u}) {
+    const ZTestResult r = pixelZTest(renderEntry(entry, entry.at("set"), technique, seed), mean, variance, z);
+    EXPECT_TRUE(r.passed) << "seed " << seed << ": " << r.rejected << " pixels rejected, worst p " << r.minPValue
+                          << " at " << r.worstX << "," << r.worstY << " (z " << r.worstZ << ")";
+    std::cout << "[ reference ] " << entry.at("image").get<std::string>() << " seed " << seed << ": min p "
+              << r.minPValue << " (level " << r.correctedAlpha << ")\n";
+  }
+  for (const auto& mistake : entry.at("catches")) {
+    Image wrong = renderEntry(entry, mistake.value("set", entry.at("set")), technique, 7);
+    const float scale = mistake.value("scale", 1.0f);
+    for (Rgb& p : wrong.pixels()) p *= scale;
+    const ZTestResult r = pixelZTest(wrong, mean, variance, z);
+    EXPECT_FALSE(r.passed) << "the Z-test does not catch: " << mistake.at("why").get<std::string>();
+    std::cout << "[ reference ] " << entry.at("image").get<std::string>() << " mistake '"
+              << mistake.at("why").get<std::string>() << "': " << r.rejected << " pixels rejected, min p " << r.minPValue
+              << "\n";
+  }
+}
+
 void checkManifest(const std::string& dir) {
   const JsonDocument doc = JsonDocument::load(dir + "references.json");
   const std::string technique = doc.root().at("technique").get<std::string>();
@@ -61,6 +115,10 @@ void checkManifest(const std::string& dir) {
   for (const auto& entry : doc.root().at("references")) {
     const std::string path = dir + entry.at("image").get<std::string>();
     SCOPED_TRACE(path);
+    if (entry.contains("variance")) {
+      checkStatistical(dir, entry, technique, update);
+      continue;
+    }
     const Image image = renderEntry(entry, entry.at("set"), technique);
     if (update) {
       saveImage(image, path);
@@ -71,8 +129,9 @@ void checkManifest(const std::string& dir) {
     EXPECT_TRUE(withinTolerance(compareImages(image, reference), entry, report)) << report;
     for (const auto& mistake : entry.at("catches")) {
       std::string mistakeReport;
-      EXPECT_FALSE(withinTolerance(compareImages(renderEntry(entry, mistake.at("set"), technique), reference), entry,
-                                   mistakeReport))
+      Image wrong = renderEntry(entry, mistake.value("set", entry.at("set")), technique);
+      for (Rgb& p : wrong.pixels()) p *= mistake.value("scale", 1.0f);
+      EXPECT_FALSE(withinTolerance(compareImages(wrong, reference), entry, mistakeReport))
           << "the tolerances do not catch: " << mistake.at("why").get<std::string>() << " (" << mistakeReport << ")";
       std::cout << "[ reference ] " << entry.at("image").get<std::string>() << ": " << report << " mistake '"
                 << mistake.at("why").get<std::string>() << "': " << mistakeReport << "\n";

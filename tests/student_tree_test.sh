@@ -12,11 +12,14 @@ launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 generator=()
 command -v ninja >/dev/null && generator=(-G Ninja)
-cmake -S "$work/tree" -B "$work/build" "${generator[@]}" "${launcher[@]}" -DLIGHTLAB_WARNINGS_AS_ERRORS=ON \
-  -DLIGHTLAB_BUILD_TESTS=OFF -DLIGHTLAB_BUILD_BENCHMARKS=OFF >/dev/null
-cmake --build "$work/build" --target lightlab -j 2 >/dev/null
+# The build inside the tree (as build/ in the root): with CCACHE_BASEDIR set, ccache reuses the main build's objects.
+export CCACHE_BASEDIR=${CCACHE_BASEDIR:-$root}
+build="$work/tree/build"
+cmake -S "$work/tree" -B "$build" "${generator[@]}" "${launcher[@]}" -DLIGHTLAB_WARNINGS_AS_ERRORS=ON \
+  -DLIGHTLAB_BUILD_BENCHMARKS=OFF >/dev/null
+cmake --build "$build" --target lightlab lightlab_task_tests -j 2 >/dev/null
 status=0
-"$work/build/lightlab" --quiet render "$work/tree/data/scenes/cornell_box.json" --width 96 -o "$work/out.png" \
+"$build/lightlab" --quiet render "$work/tree/data/scenes/cornell_box.json" --width 96 -o "$work/out.png" \
   2>"$work/stderr.txt" || status=$?
 cat "$work/stderr.txt"
 [ "$status" -eq 0 ] || { echo "FAIL: the student build exited with $status"; exit 1; }
@@ -24,16 +27,16 @@ for task in A2.1 A2.4 A2.5; do
   grep -q "$task not implemented" "$work/stderr.txt" || { echo "FAIL: $task is not reported as missing"; exit 1; }
 done
 # A2.2/A2.3 are used by intersection=student (the default) on a scene with spheres and triangles.
-"$work/build/lightlab" --quiet render "$work/tree/data/scenes/tests/two_spheres_materials.json" -o "$work/out2.png" \
+"$build/lightlab" --quiet render "$work/tree/data/scenes/tests/two_spheres_materials.json" -o "$work/out2.png" \
   2>"$work/stderr2.txt"
 for task in A2.2 A2.3; do
   grep -q "$task not implemented" "$work/stderr2.txt" || { echo "FAIL: $task is not reported as missing"; exit 1; }
 done
 [ -s "$work/out.png" ] || { echo "FAIL: no image written"; exit 1; }
 # A4: the BVH stubs fall back to brute force: same picture, tasks named, pixels not striped.
-"$work/build/lightlab" --quiet render "$work/tree/data/scenes/bunny.json" -a bvh --width 48 --set intersection=framework \
+"$build/lightlab" --quiet render "$work/tree/data/scenes/bunny.json" -a bvh --width 48 --set intersection=framework \
   -o "$work/bvh.pfm" 2>"$work/stderr3.txt"
-"$work/build/lightlab" --quiet render "$work/tree/data/scenes/bunny.json" -a none --width 48 --set intersection=framework \
+"$build/lightlab" --quiet render "$work/tree/data/scenes/bunny.json" -a none --width 48 --set intersection=framework \
   -o "$work/none.pfm" 2>/dev/null
 for task in A4.1 A4.2; do
   grep -q "$task not implemented" "$work/stderr3.txt" || { echo "FAIL: $task is not reported as missing"; exit 1; }
@@ -42,14 +45,14 @@ cmp -s "$work/bvh.pfm" "$work/none.pfm" || { echo "FAIL: the A4 fallback changed
 # A4.3 (KD-tree traversal) and A4.4 (octree traversal): the same, with -a kdtree / -a octree.
 for pair in kdtree:A4.3 octree:A4.4; do
   accel=${pair%%:*} task=${pair##*:}
-  "$work/build/lightlab" --quiet render "$work/tree/data/scenes/bunny.json" -a "$accel" --width 48 \
+  "$build/lightlab" --quiet render "$work/tree/data/scenes/bunny.json" -a "$accel" --width 48 \
     --set intersection=framework -o "$work/$accel.pfm" 2>"$work/stderr_$accel.txt"
   grep -q "$task not implemented" "$work/stderr_$accel.txt" || { echo "FAIL: $task is not reported as missing"; exit 1; }
   cmp -s "$work/$accel.pfm" "$work/none.pfm" || { echo "FAIL: the $task fallback changed the picture"; exit 1; }
 done
 # A1: the rasterizer runs on a textured scene; every stub is named, the picture is written and striped
 # (A1.1-A1.3 fall back to the framework's code, A1.4 shades magenta, A1.5 uses the texture's mean colour).
-"$work/build/lightlab" --quiet render "$work/tree/data/scenes/textured_floor.json" -t blinn-phong --width 96 \
+"$build/lightlab" --quiet render "$work/tree/data/scenes/textured_floor.json" -t blinn-phong --width 96 \
   -o "$work/a1.png" 2>"$work/stderr_a1.txt"
 for task in A1.1 A1.2 A1.3 A1.4 A1.5; do
   grep -q "$task not implemented" "$work/stderr_a1.txt" || { echo "FAIL: $task is not reported as missing"; exit 1; }
@@ -57,7 +60,7 @@ done
 [ -s "$work/a1.png" ] || { echo "FAIL: no A1 image written"; exit 1; }
 # A3: the Whitted stand-in (ray casting) runs; the recursion A3.4 is named. A3.1-A3.3 and A3.5 are reached
 # only through A3.4, so they are reported once it is written (their unit tests name them before that).
-"$work/build/lightlab" --quiet render "$work/tree/data/scenes/whitted_1980.json" -t whitted -a bvh --width 96 \
+"$build/lightlab" --quiet render "$work/tree/data/scenes/whitted_1980.json" -t whitted -a bvh --width 96 \
   --height 72 -o "$work/a3.png" 2>"$work/stderr_a3.txt"
 grep -q "A3.4 not implemented" "$work/stderr_a3.txt" || { echo "FAIL: A3.4 is not reported as missing"; exit 1; }
 [ -s "$work/a3.png" ] || { echo "FAIL: no A3 image written"; exit 1; }
@@ -65,16 +68,32 @@ grep -q "A3.4 not implemented" "$work/stderr_a3.txt" || { echo "FAIL: A3.4 is no
 # under Southwell) and names each; coarse patches keep the brute-force visibility of the A4 stubs quick.
 for pair in "form_factors=analytic:A5.1" "solver=gauss-seidel:A5.2" "solver=southwell:A5.3"; do
   set_arg=${pair%%:*} task=${pair##*:}
-  "$work/build/lightlab" --quiet radiosity "$work/tree/data/scenes/cornell_box.json" --set patch_size=0.2 \
+  "$build/lightlab" --quiet radiosity "$work/tree/data/scenes/cornell_box.json" --set patch_size=0.2 \
     --set hemicube_res=8 --set "$set_arg" >/dev/null 2>"$work/stderr_a5.txt"
   grep -q "$task not implemented" "$work/stderr_a5.txt" || { echo "FAIL: $task is not reported as missing"; exit 1; }
 done
+# Grading the untouched student tree: every task "not implemented", 0 points, a normal exit.
+for a in A1 A2 A3 A4 A5; do
+  "$build/lightlab" --quiet grade "$a" --format text,gradescope --report "$work/grade/$a" > "$work/grade_$a.txt" \
+    2>&1 || { cat "$work/grade_$a.txt"; echo "FAIL: grading $a in the student tree exited with $?"; exit 1; }
+  python3 - "$work/grade/$a/results.json" "$a" "$work/grade_$a.txt" <<'PY' || { cat "$work/grade_$a.txt"; exit 1; }
+import json, re, sys
+d = json.load(open(sys.argv[1]))
+if d["score"] != 0:
+    sys.exit(f"FAIL: the student tree scores {d['score']} on {sys.argv[2]}")
+rows = [l.split() for l in open(sys.argv[3]) if re.match(r"\s+A\d\.\d\s", l)]
+wrong = [r[0] for r in rows if " ".join(r[-2:]) != "not implemented"]
+if not rows or wrong:
+    sys.exit(f"FAIL: {sys.argv[2]}: tasks not reported as not implemented: {wrong or 'no task rows'}")
+print(f"{sys.argv[2]}: 0 points, {len(rows)} tasks not implemented")
+PY
+done
 if command -v xvfb-run >/dev/null; then
-  (cd "$work/tree" && xvfb-run -a -s '-screen 0 1280x800x24' "$work/build/lightlab" gui \
+  (cd "$work/tree" && xvfb-run -a -s '-screen 0 1280x800x24' "$build/lightlab" gui \
      --preset tests/gui/two_panes.json --screenshot "$work/gui.png" --frames 3 --timeout 600 >/dev/null)
   for task in A2.1 A2.4 A2.5; do
     grep -q "\"$task\"" "$work/gui.json" || { echo "FAIL: the GUI pane does not name $task as missing"; exit 1; }
   done
   grep -q '"phase": "done"' "$work/gui.json" || { echo "FAIL: the GUI panes did not finish"; exit 1; }
 fi
-echo "student tree: builds, runs, reports A1.1-A1.5, A2.1-A2.5, A3.4, A4.1-A4.4 and A5.1-A5.3 as not implemented (CLI and GUI)"
+echo "student tree: grades to 0 with every task not implemented; builds, runs, reports A1.1-A1.5, A2.1-A2.5, A3.4, A4.1-A4.4 and A5.1-A5.3 as not implemented (CLI and GUI)"

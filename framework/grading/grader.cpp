@@ -14,6 +14,7 @@
 #include "core/progress.h"
 #include "core/subprocess.h"
 #include "metrics/image_metrics.h"
+#include "metrics/pixel_ztest.h"
 
 namespace ll::grading {
 
@@ -112,12 +113,26 @@ class Grader {
   // The task's gtest cases, each one test sharing the spec's weight.
   std::vector<TestResult> unit(const TaskSpec& t, const TestSpec& s) {
     const std::string stem = files_ + "/" + safeName(t.id + "_" + s.filter);
-    const std::string json = stem + ".json", out = stem + ".out.txt";
+    const std::string json = stem + ".json", out = stem + ".out.txt", stubs = stem + ".stubs.jsonl";
     fs::remove(json);
+    fs::remove(stubs);
     const SubprocessResult run =
         runSubprocess({o_.taskTests, "--gtest_filter=" + s.filter, "--gtest_output=json:" + json,
                        "--gtest_brief=1"},
-                      out, out, o_.unitTimeout);
+                      out, out, o_.unitTimeout, {"LIGHTLAB_TASK_REPORT=" + stubs});
+    // The stubs each test ran (tests/task_tests_main.cpp).
+    std::map<std::string, std::set<std::string>> stubsRun;
+    {
+      std::istringstream lines(readTextFile(stubs));
+      std::string line;
+      while (std::getline(lines, line)) {
+        try {
+          const nlohmann::json j = nlohmann::json::parse(line);
+          stubsRun[j.at("test").get<std::string>()] = j.at("stubs").get<std::set<std::string>>();
+        } catch (const std::exception&) {
+        }
+      }
+    }
     std::vector<TestResult> tests;
     if (run.succeeded() || (run.started && !run.timedOut && run.signal == 0 && run.exitCode == 1 && fs::exists(json))) {
       nlohmann::json report;
@@ -136,12 +151,14 @@ class Grader {
           std::string failures;
           for (const auto& f : c.value("failures", nlohmann::json::array())) failures += f.value("failure", "") + "\n";
           if (c.value("result", "") == "SKIPPED") continue;
-          const auto missing = notImplementedIn(failures);
-          if (failures.empty()) {
-            r.status = Status::Passed;
-          } else if (missing.count(t.id)) {
+          auto missing = notImplementedIn(failures);
+          for (const std::string& id : stubsRun[c.value("classname", "") + "." + c.value("name", "")])
+            missing.emplace(id, "its stub ran in this test");
+          if (missing.count(t.id)) {
             r.status = Status::NotImplemented;
             r.message = t.id + " not implemented: " + missing.at(t.id);
+          } else if (failures.empty()) {
+            r.status = Status::Passed;
           } else {
             r.status = Status::Failed;
             const std::string first = failures.substr(0, failures.find('\n', failures.find('\n') + 1));
@@ -257,6 +274,23 @@ class Grader {
     bool ok = true;
     std::string why;
     std::ostringstream details;
+    if (e.contains("variance")) {
+      // Monte Carlo: the per-pixel Z-test against the reference mean and variance.
+      r.kind = "statistical";
+      const std::string dir = fs::path(o_.dataDir + "/references/" + s.reference).parent_path().string();
+      const Image variance = loadImage(dir + "/" + e.at("variance").get<std::string>());
+      ZTestSettings z;
+      z.alpha = e.value("ztest", nlohmann::json::object()).value("alpha", 0.01);
+      const ZTestResult zt = pixelZTest(student, reference, variance, z);
+      ok = zt.passed;
+      details << "Z-test of " << zt.tests << " pixel channels against the mean of " << e.value("renders", 0)
+              << " reference renders: " << zt.rejected << " rejected at the level " << fmt(zt.correctedAlpha)
+              << " (alpha " << fmt(z.alpha) << " after Sidak's correction); worst p " << fmt(zt.minPValue) << " at "
+              << zt.worstX << "," << zt.worstY << " (z " << fmt(zt.worstZ) << ")\n";
+      if (!ok)
+        why = std::to_string(zt.rejected) + " pixel channels lie beyond the reference's noise (worst z " +
+              fmt(zt.worstZ) + " at " + std::to_string(zt.worstX) + "," + std::to_string(zt.worstY) + ")";
+    } else {
     for (const auto& tol : e.at("tolerance")) {
       const std::string metric = tol.at("metric").get<std::string>();
       const double value = metricValue(error, metric);
@@ -288,6 +322,7 @@ class Grader {
       ok = false;
       why += (why.empty() ? "" : ", ") + fmt(100.0 * fraction) + " % of the pixels differ (max " +
              fmt(100.0 * maxFraction) + " %)";
+    }
     }
     details << "mean " << fmt(error.meanA) << " (reference " << fmt(error.meanB) << ")\n";
     r.details = details.str();

@@ -3,7 +3,9 @@
 //
 //   {"kind": "unit", "filter": "A2_4_*"}       gtest cases of lightlab_task_tests (each a test)
 //   {"kind": "image", "reference": "a2/sphere_point_light.hdr"}
-//        a render against a reference image of data/references/<dir>/references.json
+//        a render against a reference image of data/references/<dir>/references.json:
+//        its tolerances plus a per-pixel one, or, for a Monte Carlo entry (with a
+//        variance image), the per-pixel Z-test of metrics/pixel_ztest.h
 //   {"kind": "complexity", "accelerator": "bvh", "small": "scenes/bunny.json",
 //    "large": "@build/scenes/bunny_235k.json", "max_ratio": 8}
 //        time of the same camera rays on a small and a large mesh

@@ -1,5 +1,6 @@
 #include "render/student_task.h"
 
+#include <mutex>
 #include <utility>
 #include <vector>
 
@@ -10,6 +11,27 @@ thread_local TaskLog* tCurrentLog = nullptr;
 thread_local bool tStubUsed = false;
 std::atomic<uint64_t> gNextSerial{1};
 uint64_t nextSerial() { return gNextSerial.fetch_add(1, std::memory_order_relaxed); }
+
+// The process-wide record of takeTasksReported; each thread skips the lock
+// for ids it already recorded in the current epoch.
+std::mutex gReportedMutex;
+std::set<std::string> gReported;
+std::atomic<uint64_t> gReportedEpoch{1};
+
+void recordReported(const char* id) {
+  thread_local uint64_t epoch = 0;
+  thread_local std::vector<std::string> known;
+  const uint64_t now = gReportedEpoch.load(std::memory_order_acquire);
+  if (epoch != now) {
+    epoch = now;
+    known.clear();
+  }
+  for (const std::string& k : known)
+    if (k == id) return;
+  known.emplace_back(id);
+  std::lock_guard lock(gReportedMutex);
+  gReported.insert(id);
+}
 }  // namespace
 
 TaskLog::TaskLog() : serial_(nextSerial()) {}
@@ -47,6 +69,7 @@ TaskLog* currentTaskLog() { return tCurrentLog; }
 
 void reportMissingTask(const char* id, const char* what, bool marksPixels) {
   if (marksPixels) tStubUsed = true;
+  recordReported(id);
   if (!tCurrentLog) return;
   // Stubs may run once per ray: remember (log serial, id) pairs this thread
   // already reported, so the common case takes no lock. Serials, not
@@ -58,6 +81,14 @@ void reportMissingTask(const char* id, const char* what, bool marksPixels) {
   if (reported.size() > 64) reported.clear();
   reported.emplace_back(serial, id);
   tCurrentLog->report(id, what, !marksPixels);
+}
+
+std::set<std::string> takeTasksReported() {
+  std::lock_guard lock(gReportedMutex);
+  std::set<std::string> out;
+  out.swap(gReported);
+  gReportedEpoch.fetch_add(1, std::memory_order_acq_rel);
+  return out;
 }
 
 bool takeStubFlag() {
