@@ -82,6 +82,7 @@ void addMessage(AppState& app, const std::string& text, bool error) {
 }
 
 void openScene(AppState& app, const std::string& path, bool keepCamera) {
+  if (app.loading.valid()) app.abandonedLoads.push_back(std::move(app.loading));
   app.loadingPath = path;
   app.loadKeepsCamera = keepCamera;
   app.loading = std::async(std::launch::async, [path]() -> std::shared_ptr<const Scene> {
@@ -90,6 +91,9 @@ void openScene(AppState& app, const std::string& path, bool keepCamera) {
 }
 
 void pollSceneLoad(AppState& app) {
+  std::erase_if(app.abandonedLoads, [](const std::future<std::shared_ptr<const Scene>>& f) {
+    return f.wait_for(std::chrono::seconds(0)) == std::future_status::ready;
+  });
   if (!app.loading.valid() ||
       app.loading.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
     return;

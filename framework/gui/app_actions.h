@@ -25,6 +25,7 @@ PaneView viewFromName(const std::string& name);
 
 // Starts loading a scene in the background; the current scene stays until it
 // succeeds. keepCamera = false resets the view to the new scene's camera.
+// A load still running is abandoned: its result is dropped, nothing waits for it.
 void openScene(AppState& app, const std::string& path, bool keepCamera = false);
 // Installs a finished load (or reports its error). Call once per frame.
 void pollSceneLoad(AppState& app);

@@ -110,6 +110,9 @@ struct AppState {
   std::chrono::steady_clock::time_point lastWatch;  // when the scene file's time was last checked
   std::string loadingPath;                          // non-empty while a load runs
   std::future<std::shared_ptr<const Scene>> loading;
+  // Loads replaced by a newer open, kept until done: destroying a std::async
+  // future waits for its task, which would stall the UI.
+  std::vector<std::future<std::shared_ptr<const Scene>>> abandonedLoads;
   bool loadKeepsCamera = false;         // a reload keeps the view; opening a new scene resets it
   std::vector<std::string> sceneFiles;  // the file list of the "open" menu
   char pathInput[512] = {};
@@ -148,7 +151,7 @@ struct AppState {
   std::array<float, 4> compareRect{};
   std::vector<std::array<float, 4>> overlayRects;  // captions and banners drawn over the images
   std::map<std::string, std::array<float, 4>>
-      widgetRects;  // named controls of the panel, for scripted UI tests
+      widgetRects;  // named controls the panel drew last frame, for scripted UI tests
 
   // Last member: destroyed (joined) first, before anything its jobs use.
   std::unique_ptr<BackgroundWorker> background = std::make_unique<BackgroundWorker>();

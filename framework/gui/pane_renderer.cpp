@@ -115,6 +115,7 @@ void PaneRenderer::workerLoop() {
                  e) {  // UserError from a technique, or anything else: shown, never fatal
       PaneSnapshot s = snapshot();
       s.request = id;
+      s.starts = starts_;
       s.phase = PaneSnapshot::Phase::Failed;
       s.error = e.what();
       publish(s);
@@ -130,6 +131,7 @@ void PaneRenderer::workerLoop() {
 void PaneRenderer::render(const RenderRequest& request, uint64_t id) {
   PaneSnapshot s = snapshot();
   s.request = id;
+  s.starts = ++starts_;
   s.error.clear();
   s.missingTasks.clear();
   s.passes = 0;

@@ -45,6 +45,7 @@ struct PaneSnapshot {
   uint64_t version = 0;                // increases with every published image
   uint64_t request = 0;                // the submit() this snapshot reports on
   uint64_t imageRequest = 0;           // the submit() the image was rendered for
+  uint64_t starts = 0;                 // renders the worker began: increases on every restart
   std::shared_ptr<const Image> image;  // linear radiance, stub pixels striped magenta
   bool preview = false;                // image is the quick low-resolution first look
   PaneView view = PaneView::Image;     // what `image` holds: radiance, or per-pixel counts
@@ -100,6 +101,7 @@ class PaneRenderer {
   std::string accelKey_;
   double buildSeconds_ = 0.0;
   double lastPassSeconds_ = -1.0;  // the first full pass of the last render; < 0 = unknown
+  uint64_t starts_ = 0;            // renders begun, for PaneSnapshot::starts
   std::string costKey_;
 
   std::thread worker_;  // last member: starts after everything above exists

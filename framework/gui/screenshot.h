@@ -14,7 +14,8 @@ namespace ll::gui {
 void saveFramebufferPng(const std::string& path, int width, int height);
 
 // Writes `path` with the .json extension: framebuffer size, and per pane its
-// technique, accelerator, phase, passes and the rectangle of its image in
+// technique, accelerator, phase, passes, renders started (`starts`, grows on
+// every restart), image version and the rectangle of its image in
 // framebuffer pixels (top-left origin), scaled by `pixelScale` from window
 // coordinates. Returns the sidecar's path.
 std::string saveScreenshotSidecar(const AppState& app, const std::string& path, int width,

@@ -27,6 +27,14 @@ void recordWidget(AppState& app, const std::string& name) {
   app.widgetRects[name] = {a.x, a.y, b.x - a.x, b.y - a.y};
 }
 
+// Remembers the visible content area of the current window (the panel, or an
+// open combo's list: no title bar, padding or scrolled-out part), under `name`.
+void recordWindow(AppState& app, const std::string& name) {
+  const ImVec2 pos = ImGui::GetWindowPos(), scroll(ImGui::GetScrollX(), ImGui::GetScrollY());
+  const ImVec2 a = ImGui::GetWindowContentRegionMin(), b = ImGui::GetWindowContentRegionMax();
+  app.widgetRects[name] = {pos.x + a.x + scroll.x, pos.y + a.y + scroll.y, b.x - a.x, b.y - a.y};
+}
+
 void helpMarker(const char* text) {
   ImGui::SameLine();
   ImGui::TextDisabled("(?)");
@@ -44,10 +52,14 @@ void sceneSection(AppState& app) {
     ImGui::TextWrapped("effects: %s", joinNames(app.scene->effects.names()).c_str());
   }
   if (ImGui::BeginCombo("open", "choose a scene file")) {
-    for (const std::string& f : app.sceneFiles)
+    recordWindow(app, "scene.files.list");
+    for (const std::string& f : app.sceneFiles) {
       if (ImGui::Selectable(f.c_str(), f == app.scenePath)) openScene(app, f);
+      recordWidget(app, "scene.file:" + f);
+    }
     ImGui::EndCombo();
   }
+  recordWidget(app, "scene.files");
   helpMarker(
       "Scenes found in data/scenes and the build's generated scenes.\nYou can also drop a scene or "
       "preset file on the window.");
@@ -216,13 +228,17 @@ void paneSection(AppState& app, int i) {
                 p.technique.c_str(), p.accelerator.c_str(), i);
   if (!ImGui::CollapsingHeader(title, i < 2 ? ImGuiTreeNodeFlags_DefaultOpen : 0)) return;
   ImGui::PushID(i);
+  const std::string letter(1, paneLetter(i));
   if (ImGui::BeginCombo("technique", p.technique.c_str())) {
+    recordWindow(app, letter + ".technique.list");
     for (const TechniqueInfo& t : techniques()) {
       if (ImGui::Selectable(t.name.c_str(), t.name == p.technique)) setTechnique(app, i, t.name);
+      recordWidget(app, letter + ".technique:" + t.name);
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", t.help.c_str());
     }
     ImGui::EndCombo();
   }
+  recordWidget(app, letter + ".technique");
   if (ImGui::BeginCombo("accelerator", p.accelerator.c_str())) {
     for (const AcceleratorInfo& a : accelerators()) {
       if (ImGui::Selectable(a.name.c_str(), a.name == p.accelerator))
@@ -235,7 +251,7 @@ void paneSection(AppState& app, int i) {
                        ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp))
     p.dirty = true;
   if (paramWidgets(p.techniqueParams, [&](const std::string& name) {
-        recordWidget(app, std::string(1, paneLetter(i)) + ".param." + name);
+        recordWidget(app, letter + ".param." + name);
       }))
     p.dirty = true;
   if (!p.accelParams.decls().empty() && ImGui::TreeNode("accelerator parameters")) {
@@ -248,7 +264,7 @@ void paneSection(AppState& app, int i) {
     p.view = static_cast<PaneView>(view);
     p.dirty = true;
   }
-  recordWidget(app, std::string(1, paneLetter(i)) + ".view");
+  recordWidget(app, letter + ".view");
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip(
         "cost: the accelerator's work for the camera ray of each pixel, as a heatmap with its "
@@ -337,6 +353,8 @@ void drawSidePanel(AppState& app, GLFWwindow* window, float width, float height)
   ImGui::Begin("LightLab", nullptr,
                ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
                    ImGuiWindowFlags_NoBringToFrontOnFocus);
+  app.widgetRects.clear();  // only what this frame draws
+  recordWindow(app, "panel");
   ImGui::PushItemWidth(-ImGui::GetFontSize() * 9.0f);
   sceneSection(app);
   cameraSection(app);

@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
 # The GUI tried as a new user would, with real X input (xdotool under Xvfb):
-# open the bunny with two panes, switch to the wipe and drag it, change a
-# parameter and see the pane restart, open a broken scene and see the error
-# while the previous scene keeps rendering, orbit the camera. Each step is
-# checked on the sidecar of an F12 screenshot (where the GUI drew its
-# controls, the compare state, pane phases, messages, the camera).
+# start on the default scene (the Cornell box), open the bunny from the
+# panel's scene list, switch pane B to another technique than ray casting,
+# switch to the wipe and drag it, change a parameter and see the pane
+# restart, open a broken scene and see the error while the previous scene
+# keeps rendering, orbit the camera. Each step is checked on the sidecar of
+# an F12 screenshot (where the GUI drew its controls, the compare state,
+# pane phases and render starts, messages, the camera). Every wait polls the
+# sidecar with a timeout, so a loaded machine only makes it slower.
 #   walkthrough_test.sh LIGHTLAB OUT_DIR     (run under xvfb-run)
 set -euo pipefail
 LL=$1 OUT=$2
@@ -17,23 +20,49 @@ gui=$!
 trap 'kill $gui 2>/dev/null || true' EXIT
 xdotool search --sync --name LightLab >/dev/null
 
+fail() { echo "FAIL: $*"; kill -0 $gui 2>/dev/null || { echo "the GUI died:"; cat gui.log; }; exit 1; }
 q() { python3 -c "import json,sys; j=json.load(open('$1')); print($2)"; }  # q FILE EXPR
-shot() {  # shot NAME: F12, wait for the PNG and its sidecar
+shot() {  # shot NAME: F12, wait for the PNG and its sidecar (30 s)
   rm -f lightlab_*.png lightlab_*.json
+  kill -0 $gui 2>/dev/null || fail "the GUI died before $1"
   xdotool mousemove 5 5 key F12
-  for _ in $(seq 100); do ls lightlab_*.json >/dev/null 2>&1 && break; sleep 0.1; done
+  for _ in $(seq 300); do ls lightlab_*.json >/dev/null 2>&1 && break; sleep 0.1; done
+  ls lightlab_*.json >/dev/null 2>&1 || fail "$1: no screenshot after F12"
   sleep 0.2
   mv lightlab_*.png "$1.png" && mv lightlab_*.json "$1.json"
 }
-until_shot() {  # until_shot NAME PYTHON-CONDITION: screenshots until the condition holds (60 s)
-  for _ in $(seq 120); do
+until_shot() {  # until_shot NAME PYTHON-CONDITION: screenshots until the condition holds (90 s)
+  local end=$((SECONDS + 90))
+  while :; do
     shot "$1"
     [ "$(q "$1.json" "$2")" = True ] && return 0
-    sleep 0.5
+    [ $SECONDS -lt $end ] || fail "$1: never true: $2"
+    sleep 0.3
   done
-  echo "FAIL: $1: never true: $2"; exit 1
+}
+# reveal NAME WIDGET [BOX]: screenshots until WIDGET lies wholly inside BOX (a
+# recorded window: the side panel, or an open combo's list), turning the mouse
+# wheel over BOX to scroll it there, as a user would.
+reveal() {
+  local where
+  for _ in $(seq 40); do
+    shot "$1"
+    where=$(q "$1.json" "(lambda r, b: 'missing' if r is None else 'up' if r[1] < b[1] else 'down' if r[1] + r[3] > b[1] + b[3] else 'ok')(j['widgets'].get('$2'), j['widgets']['${3:-panel}'])")
+    case $where in
+      ok) return 0 ;;
+      up) xdotool mousemove $(centre "$1" "${3:-panel}") click 4 ;;
+      down) xdotool mousemove $(centre "$1" "${3:-panel}") click 5 ;;
+      *) fail "$1: the GUI drew no widget '$2'" ;;
+    esac
+    sleep 0.2
+  done
+  fail "$1: could not scroll '$2' into view"
 }
 centre() { q "$1.json" "' '.join(str(int(v)) for v in (j['widgets']['$2'][0] + j['widgets']['$2'][2] * ${3:-0.5}, j['widgets']['$2'][1] + j['widgets']['$2'][3] / 2))"; }
+click() {  # click NAME WIDGET [FRACTION-ACROSS] [BOX]: reveal the widget, then click it
+  reveal "$1" "$2" "${4:-panel}"
+  xdotool mousemove $(centre "$1" "$2" "${3:-0.5}") sleep 0.2 click 1
+}
 drag() {  # drag X0 Y0 X1 Y1 in small steps, as a hand would
   xdotool mousemove "$1" "$2" sleep 0.1 mousedown 1 sleep 0.1
   for i in 1 2 3 4 5; do
@@ -41,40 +70,75 @@ drag() {  # drag X0 Y0 X1 Y1 in small steps, as a hand would
   done
   xdotool sleep 0.1 mouseup 1
 }
-done_both="j['panes'][0]['phase'] == 'done' and j['panes'][1]['phase'] == 'done'"
+field() { q "$1.json" "[p['$2'] for p in j['panes'][:2]]"; }  # field NAME KEY: panes A and B
+done_both="all(p['phase'] == 'done' and p['passes'] == p['total_passes'] for p in j['panes'][:2])"
 
-# 1. The bunny opens in two panes; both finish; B names no missing task in the solution build.
-until_shot s1 "$done_both"
-echo "ok: the bunny rendered in both panes"
+# 1. The GUI opens on the default scene, both panes ray casting; both finish.
+until_shot s1 "j['scene'].endswith('/data/scenes/cornell_box.json') and $done_both"
+echo "ok: the Cornell box rendered in both panes"
 
-# 2. Wipe: click the radio button, then drag the split line from the middle to a quarter.
-xdotool mousemove $(centre s1 compare.wipe 0.1) click 1
-until_shot s2 "j['compare']['mode'] == 'wipe' and j['compare']['rect'][2] > 0"
-read -r x y w h < <(q s2.json "' '.join(str(int(v)) for v in j['compare']['rect'])")
+# 2. Open the bunny from the scene list: click the combo, then the file (scrolling the list if needed).
+starts=$(field s1 starts)
+click s2a scene.files
+until_shot s2b "'scene.files.list' in j['widgets']"
+bunny=$(q s2b.json "([k for k in j['widgets'] if k == 'scene.file:$ROOT/data/scenes/bunny.json'] + [k for k in j['widgets'] if k.startswith('scene.file:') and k.endswith('/data/scenes/bunny.json')] + [''])[0]")
+[ -n "$bunny" ] || fail "the scene list has no data/scenes/bunny.json"
+click s2c "$bunny" 0.5 scene.files.list
+# Polled on its own: every screenshot adds a message, and only the last 50 are kept.
+until_shot s2o "any(m['text'] == 'opened ${bunny#scene.file:}' for m in j['messages'])"
+until_shot s2 "j['scene'].endswith('/data/scenes/bunny.json') and all(p['starts'] > s for p, s in zip(j['panes'], $starts)) and $done_both"
+echo "ok: the bunny was opened from the scene list and rendered in both panes"
+
+# 3. Pane B gets another technique through its combo (whitted or blinn-phong if built, else any other).
+click s3a B.technique
+until_shot s3b "'B.technique.list' in j['widgets']"
+tech=$(q s3b.json "([t for t in ('whitted', 'blinn-phong') if 'B.technique:' + t in j['widgets']] + [k.split(':', 1)[1] for k in j['widgets'] if k.startswith('B.technique:') and k != 'B.technique:raycast'] + [''])[0]")
+if [ -n "$tech" ]; then
+  starts=$(field s3b starts)
+  click s3c "B.technique:$tech" 0.5 B.technique.list
+  until_shot s3 "j['panes'][1]['technique'] == '$tech' and j['panes'][0]['technique'] == 'raycast' and j['panes'][1]['starts'] > $starts[1] and $done_both"
+  echo "ok: pane B switched to $tech and rendered, beside ray casting in A"
+else
+  xdotool key Escape
+  shot s3
+  echo "note: only ray casting is registered; pane B stays raycast"
+fi
+
+# 4. Wipe: click the radio button, then drag the split line from the middle to a quarter.
+click s4a compare.wipe 0.1
+until_shot s4b "j['compare']['mode'] == 'wipe' and j['compare']['rect'][2] > 0"
+read -r x y w h < <(q s4b.json "' '.join(str(int(v)) for v in j['compare']['rect'])")
 drag $((x + w / 2)) $((y + h / 2)) $((x + w / 4)) $((y + h / 2))
-until_shot s3 "abs(j['compare']['wipe'] - 0.25) < 0.03"
-echo "ok: the wipe line was dragged to $(q s3.json "round(j['compare']['wipe'], 3)")"
+until_shot s4 "abs(j['compare']['wipe'] - 0.25) < 0.03"
+echo "ok: the wipe line was dragged to $(q s4.json "round(j['compare']['wipe'], 3)")"
 
-# 3. A parameter: click right of the middle of pane A's light_samples slider (the rect includes the label); A restarts and finishes.
-xdotool mousemove $(centre s3 A.param.light_samples 0.6) click 1
-until_shot s4 "int(j['panes'][0]['params']['light_samples']) > 16 and $done_both"
-echo "ok: light_samples = $(q s4.json "j['panes'][0]['params']['light_samples']"), pane A re-rendered"
+# 5. A parameter: click right of the middle of pane A's light_samples slider (the rect includes
+# the label). A starts a new render, publishes new images and finishes all its passes again.
+until_shot s5w "$done_both"
+reveal s5a A.param.light_samples
+before=$(q s5a.json "[j['panes'][0][k] for k in ('starts', 'image_version')]")
+xdotool mousemove $(centre s5a A.param.light_samples 0.6) sleep 0.2 click 1
+until_shot s5 "int(j['panes'][0]['params']['light_samples']) > 16 and j['panes'][0]['starts'] > $before[0] and j['panes'][0]['image_version'] > $before[1] and $done_both"
+echo "ok: light_samples = $(q s5.json "j['panes'][0]['params']['light_samples']"), pane A restarted" \
+  "(starts $(q s5a.json "j['panes'][0]['starts']") -> $(q s5.json "j['panes'][0]['starts']")," \
+  "image version $(q s5a.json "j['panes'][0]['image_version']") -> $(q s5.json "j['panes'][0]['image_version']"))"
 
-# 4. A broken scene: its error is shown, the bunny stays and still renders.
-xdotool mousemove $(centre s4 scene.path) click 1 sleep 0.2 keydown ctrl keydown a sleep 0.2 keyup a keyup ctrl
+# 6. A broken scene, typed into the path box: its error is shown, the bunny stays and still renders.
+click s6a scene.path
+xdotool sleep 0.2 keydown ctrl keydown a sleep 0.2 keyup a keyup ctrl
 xdotool sleep 0.2 type --delay 10 "$ROOT/data/scenes/tests/bad/unknown_key.json"
-xdotool sleep 0.2 mousemove $(centre s4 scene.open) click 1
-until_shot s5 "any('unknown_key.json:6:5: unknown key' in m['text'] for m in j['messages'])"
-[ "$(q s5.json "j['scene'].endswith('bunny.json')")" = True ] || { echo "FAIL: the bunny was replaced"; exit 1; }
+click s6b scene.open
+until_shot s6 "any('unknown_key.json:6:5: unknown key' in m['text'] for m in j['messages'])"
+[ "$(q s6.json "j['scene'].endswith('/data/scenes/bunny.json')")" = True ] || fail "the bunny was replaced"
 echo "ok: the broken scene was reported and the bunny kept"
 
-# 5. Orbit: a drag over the image turns the camera around its target, at the same distance.
-read -r x y w h < <(q s5.json "' '.join(str(int(v)) for v in j['compare']['rect'])")
+# 7. Orbit: a drag over the image turns the camera around its target, at the same distance.
+read -r x y w h < <(q s6.json "' '.join(str(int(v)) for v in j['compare']['rect'])")
 drag $((x + w * 3 / 4)) $((y + h / 2)) $((x + w * 3 / 4 + 60)) $((y + h / 2 - 20))
-until_shot s6 "j['camera']['eye'] != $(q s5.json "j['camera']['eye']") and $done_both"
+until_shot s7 "j['camera']['eye'] != $(q s6.json "j['camera']['eye']") and $done_both"
 dist="import math; d=lambda c: math.dist(c['eye'], c['target'])"
-python3 -c "$dist; import json; a=json.load(open('s5.json'))['camera']; b=json.load(open('s6.json'))['camera']; assert abs(d(a)-d(b)) < 1e-3*d(a), (a, b)"
+python3 -c "$dist; import json; a=json.load(open('s6.json'))['camera']; b=json.load(open('s7.json'))['camera']; assert abs(d(a)-d(b)) < 1e-3*d(a), (a, b)"
 echo "ok: the camera orbited; both panes re-rendered"
 
-kill -0 $gui || { echo "FAIL: the GUI died"; cat gui.log; exit 1; }
+kill -0 $gui || fail "the GUI died"
 echo "GUI walkthrough OK: $OUT"
