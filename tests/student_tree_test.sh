@@ -17,7 +17,7 @@ export CCACHE_BASEDIR=${CCACHE_BASEDIR:-$root}
 build="$work/tree/build"
 cmake -S "$work/tree" -B "$build" "${generator[@]}" "${launcher[@]}" -DLIGHTLAB_WARNINGS_AS_ERRORS=ON \
   -DLIGHTLAB_BUILD_BENCHMARKS=OFF >/dev/null
-cmake --build "$build" --target lightlab lightlab_task_tests -j 2 >/dev/null
+cmake --build "$build" --target lightlab lightlab_task_tests lightlab_big_meshes -j 2 >/dev/null
 status=0
 "$build/lightlab" --quiet render "$work/tree/data/scenes/cornell_box.json" --width 96 -o "$work/out.png" \
   2>"$work/stderr.txt" || status=$?
@@ -88,6 +88,28 @@ if not rows or wrong:
 print(f"{sys.argv[2]}: 0 points, {len(rows)} tasks not implemented")
 PY
 done
+# The autograder entry on the student tree: a submission that does not compile gets 0 and the compiler's
+# message; the solution's A2 files (markers stripped, as a student would hand them in) get full marks.
+mkdir -p "$work/sub_broken" "$work/sub_solution"
+echo 'this is not C++' > "$work/sub_broken/camera_ray.cpp"
+bash "$work/tree/assignments/autograder/run_autograder" A2 "$work/sub_broken" "$work/res_broken" 2>/dev/null
+python3 - "$work/res_broken/results.json" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+assert d["score"] == 0 and "does not build" in d["output"] and "camera_ray.cpp" in d["tests"][0]["output"], d["output"]
+print("autograder: a broken submission gets 0 points and the compiler's message")
+PY
+for f in camera_ray.cpp ray_sphere.cpp ray_triangle.cpp blinn_phong.cpp shadow_ray.cpp; do
+  unifdef -x 2 -DLIGHTLAB_SOLUTION=1 -o "$work/sub_solution/$f" "$root/assignments/a2_raycasting/$f" || true
+done
+bash "$work/tree/assignments/autograder/run_autograder" A2 "$work/sub_solution" "$work/res_solution" >/dev/null
+python3 - "$work/res_solution/results.json" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+best = sum(t["max_score"] for t in d["tests"])
+assert best > 0 and abs(d["score"] - best) < 1e-3, f"the solution's files score {d['score']} of {best}"
+print(f"autograder: the solution's A2 files score {d['score']:.4g}/{best:.4g}")
+PY
 if command -v xvfb-run >/dev/null; then
   (cd "$work/tree" && xvfb-run -a -s '-screen 0 1280x800x24' "$build/lightlab" gui \
      --preset tests/gui/two_panes.json --screenshot "$work/gui.png" --frames 3 --timeout 600 >/dev/null)
