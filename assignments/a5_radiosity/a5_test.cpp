@@ -114,6 +114,11 @@ a5::RadiositySettings settingsFor(a5::FormFactorMethod method, float patchSize) 
   r.formFactors.method = method;
   r.formFactors.hemicubeResolution = 64;
   r.formFactors.monteCarloSamples = 64;
+#ifdef LIGHTLAB_HAVE_EMBREE
+  // Visibility through the framework's Embree when it is there: these form-factor checks of A5 must not
+  // wait on A4 (the BVH stubs are brute force: minutes for the Monte Carlo pairs).
+  r.accelerator = "embree";
+#endif
   return r;
 }
 
