@@ -108,17 +108,22 @@ double objectFormFactor(const a5::SolvedRadiosity& s, uint32_t from, uint32_t to
   return flux / area;
 }
 
-a5::RadiositySettings settingsFor(a5::FormFactorMethod method, float patchSize) {
+// Visibility through the framework's Embree when it is there: the A5 checks must not wait on A4 (the BVH
+// stubs are brute force: minutes for the Monte Carlo pairs in the student tree).
+a5::RadiositySettings quickVisibility() {
   a5::RadiositySettings r;
+#ifdef LIGHTLAB_HAVE_EMBREE
+  r.accelerator = "embree";
+#endif
+  return r;
+}
+
+a5::RadiositySettings settingsFor(a5::FormFactorMethod method, float patchSize) {
+  a5::RadiositySettings r = quickVisibility();
   r.patchSize = patchSize;
   r.formFactors.method = method;
   r.formFactors.hemicubeResolution = 64;
   r.formFactors.monteCarloSamples = 64;
-#ifdef LIGHTLAB_HAVE_EMBREE
-  // Visibility through the framework's Embree when it is there: these form-factor checks of A5 must not
-  // wait on A4 (the BVH stubs are brute force: minutes for the Monte Carlo pairs).
-  r.accelerator = "embree";
-#endif
   return r;
 }
 
@@ -203,7 +208,7 @@ TEST(A5_Solvers, ClosedEnclosureConvergesToEOverOneMinusRho) {
 
 TEST(A5_Solvers, AllSolversAgreeWithTheDirectSolveOnTheCornellBox) {
   const Scene scene = loadScene(std::string(LIGHTLAB_DATA_DIR) + "/scenes/cornell_box.json");
-  a5::RadiositySettings r;
+  a5::RadiositySettings r = quickVisibility();
   r.patchSize = 0.12f;
   r.formFactors.hemicubeResolution = 16;
   r.solver.method = a5::SolverMethod::Direct;
@@ -284,7 +289,7 @@ TEST(A5_Radiosity, RendersTheCornellBoxWithColourBleedingAndNoNaN) {
 
 TEST(A5_Radiosity, ProgressiveRefinementConvergesToTheBatchSouthwellAndKeepsItsStateAcrossRenders) {
   const Scene scene = loadScene(std::string(LIGHTLAB_DATA_DIR) + "/scenes/cornell_box.json");
-  a5::RadiositySettings r;
+  a5::RadiositySettings r = quickVisibility();
   r.patchSize = 0.1f;
   r.formFactors.hemicubeResolution = 16;
   r.solver.method = a5::SolverMethod::Southwell;
@@ -313,7 +318,7 @@ TEST(A5_Radiosity, ProgressiveRefinementConvergesToTheBatchSouthwellAndKeepsItsS
 
 TEST(A5_Radiosity, AdaptiveRefinementSplitsOnlyWhereNeighboursDiffer) {
   const Scene scene = loadScene(std::string(LIGHTLAB_DATA_DIR) + "/scenes/cornell_box.json");
-  a5::RadiositySettings r;
+  a5::RadiositySettings r = quickVisibility();
   r.patchSize = 0.12f;
   r.formFactors.hemicubeResolution = 16;
   r.adaptivePasses = 2;

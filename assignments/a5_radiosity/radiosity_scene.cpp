@@ -14,6 +14,9 @@ AcceleratorInfo bvhAccelerator();
 AcceleratorInfo kdtreeAccelerator();
 AcceleratorInfo octreeAccelerator();
 AcceleratorInfo bruteForceAccelerator();
+#ifdef LIGHTLAB_HAVE_EMBREE
+AcceleratorInfo embreeAccelerator();  // framework/accel/embree_accelerator.cpp
+#endif
 }  // namespace ll
 
 namespace ll::a5 {
@@ -21,6 +24,9 @@ namespace ll::a5 {
 namespace {
 
 AcceleratorInfo acceleratorNamed(const std::string& name) {
+#ifdef LIGHTLAB_HAVE_EMBREE
+  if (name == "embree") return embreeAccelerator();
+#endif
   return name == "kdtree" ? kdtreeAccelerator()
          : name == "octree" ? octreeAccelerator()
          : name == "none"   ? bruteForceAccelerator()

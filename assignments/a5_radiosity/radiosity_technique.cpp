@@ -134,8 +134,15 @@ std::vector<ParamDecl> radiosityParams() {
       ParamDecl::integer("bounce", 1, 0, 64, "K for show=bounce/bounces"),
       ParamDecl::choice("interpolate", "gouraud", {"gouraud", "flat"},
                         "gouraud: radiosity interpolated from the patch corners; flat: one value per patch"),
-      ParamDecl::choice("patch_accelerator", "bvh", {"bvh", "kdtree", "octree", "none"},
-                        "the accelerator over the patches for visibility rays and display"),
+      ParamDecl::choice("patch_accelerator", "bvh",
+                        {"bvh", "kdtree", "octree", "none"
+#ifdef LIGHTLAB_HAVE_EMBREE
+                         ,
+                         "embree"
+#endif
+                        },
+                        "the accelerator over the patches for visibility rays and display (embree: the "
+                        "framework's, independent of assignment 4)"),
       ParamDecl::integer("sphere_segments", 24, 6, 256, "tessellation of spheres into patches"),
       ParamDecl::boolean("progressive", false,
                          "progressive refinement (Cohen 1988): Southwell shooting with hemicube rows computed "
