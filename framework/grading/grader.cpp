@@ -84,7 +84,11 @@ class Grader {
     size_t total = 0;
     for (const TaskSpec& t : spec_.tasks)
       if (o_.onlyTask.empty() || t.id == o_.onlyTask) total += t.tests.size();
-    if (total == 0) throwUserError("no task '" + o_.onlyTask + "' in " + spec_.path);
+    if (total == 0) {
+      std::vector<std::string> ids;
+      for (const TaskSpec& t : spec_.tasks) ids.push_back(t.id);
+      throwUserError("no task '" + o_.onlyTask + "' in " + spec_.path + " (allowed: " + joinNames(ids) + ")");
+    }
     ProgressBar progress("grading " + spec_.assignment, static_cast<double>(total), o_.quiet);
     size_t done = 0;
     for (const TaskSpec& t : spec_.tasks) {

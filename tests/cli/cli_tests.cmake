@@ -98,3 +98,16 @@ if(LIGHTLAB_WITH_GUI)
   lightlab_error_test(gui_bad_preset_value "bad_preset\\.json:[0-9]+:[0-9]+: .*light_samples.*\\[1, 1024\\]"
                       gui --preset ${PROJECT_SOURCE_DIR}/tests/gui/bad_preset.json)
 endif()
+
+# Grading: unknown assignments and tasks, and broken grading specs, named with file:line:col.
+set(GRADING_BAD ${PROJECT_SOURCE_DIR}/tests/grading/bad)
+lightlab_error_test(grade_unknown_assignment "unknown assignment 'A9' \\(allowed: A1 \\(a1_rasterizer\\), A2"
+                    grade A9 --report ${OUT}/grade_unknown)
+lightlab_error_test(grade_unknown_task "no task 'A2.9' in .*a2_raycasting/grading\\.json \\(allowed: A2.1, A2.2"
+                    grade A2 --task A2.9 --report ${OUT}/grade_unknown_task)
+lightlab_error_test(grade_unknown_kind "unknown_kind\\.json:6:[0-9]+: unknown test kind 'exam' \\(allowed: unit, image, complexity\\)"
+                    grade ${GRADING_BAD}/unknown_kind.json --report ${OUT}/grade_bad)
+lightlab_error_test(grade_unknown_reference "unknown_reference\\.json:6:[0-9]+: no reference image 'teapot\\.hdr' in .*\\(allowed: sphere_point_light\\.hdr"
+                    grade ${GRADING_BAD}/unknown_reference.json --report ${OUT}/grade_bad)
+lightlab_error_test(grade_missing_task_tests "grade: no task tests at /nope \\(build them"
+                    grade A2 --task-tests /nope --report ${OUT}/grade_bad)
