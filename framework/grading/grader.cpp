@@ -385,8 +385,9 @@ class Grader {
       r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       return r;
     }
-    // Far beyond the allowed ratio is a fail: stop waiting there.
-    const double limit = std::max(5.0, 4.0 * s.maxRatio * std::max(ts, 1e-3));
+    // Far beyond the allowed ratio is a fail: stop waiting there (the process also loads the mesh and
+    // builds the structure: a KD-tree over 235k triangles takes seconds).
+    const double limit = std::max(60.0, 4.0 * s.maxRatio * std::max(ts, 1e-3));
     const double tl = ts < 0.0 ? -1.0 : best(s.large, "large", limit, large);
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const Render& failed = ts < 0.0 ? small : large;
