@@ -2,6 +2,8 @@
 // The HTML report is in html_report.cpp.
 #include "grading/grade_reports.h"
 
+#include "grading/report_text.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -18,18 +20,6 @@ namespace ll::grading {
 
 namespace {
 
-// Up to `decimals` decimals without trailing zeros: 73.5, 100, 3.33.
-std::string formatNumber(double v, int decimals = 2) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  std::string s = buf;
-  if (s.find('.') != std::string::npos) {
-    while (!s.empty() && s.back() == '0') s.pop_back();
-    if (!s.empty() && s.back() == '.') s.pop_back();
-  }
-  if (s == "-0") s = "0";
-  return s;
-}
 
 std::string formatFixed(double v, int decimals) {
   char buf[64];
@@ -88,51 +78,7 @@ double round4(double v) {
   return std::round(v * 1e4) / 1e4;
 }
 
-// Escapes for XML attributes (line breaks as character references) or element text
-// (`text`: line breaks kept); drops the control characters XML 1.0 forbids.
-std::string xmlEscape(const std::string& s, bool text = false) {
-  std::string out;
-  out.reserve(s.size());
-  for (char c : s) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      case '\'':
-        out += "&apos;";
-        break;
-      case '\n':
-        out += text ? "\n" : "&#10;";
-        break;
-      case '\r':
-        out += "&#13;";
-        break;
-      case '\t':
-        out += text ? "\t" : "&#9;";
-        break;
-      default:
-        if (static_cast<unsigned char>(c) >= 0x20) out += c;
-    }
-  }
-  return out;
-}
 
-void writeFile(const std::string& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  if (!out) throwUserError("cannot write " + path);
-  out.write(text.data(), static_cast<std::streamsize>(text.size()));
-  out.close();
-  if (!out) throwUserError("cannot write " + path);
-}
 
 }  // namespace
 
@@ -253,18 +199,18 @@ void writeJUnitReport(const GradeResult& result, const std::string& path) {
   }
 
   std::string xml = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-  xml += "<testsuites name=\"" + xmlEscape(result.assignment) + "\" tests=\"" +
+  xml += "<testsuites name=\"" + escapeMarkup(result.assignment) + "\" tests=\"" +
          std::to_string(total.tests) + "\" failures=\"" + std::to_string(total.failures) +
          "\" errors=\"" + std::to_string(total.errors) + "\" time=\"" +
          formatFixed(result.seconds, 3) + "\">\n";
   for (const TaskResult& task : result.tasks) {
     Counts c = count(task);
     const std::string suite = task.title.empty() ? task.id : task.id + " " + task.title;
-    xml += "  <testsuite name=\"" + xmlEscape(suite) + "\" tests=\"" + std::to_string(c.tests) +
+    xml += "  <testsuite name=\"" + escapeMarkup(suite) + "\" tests=\"" + std::to_string(c.tests) +
            "\" failures=\"" + std::to_string(c.failures) + "\" errors=\"" +
            std::to_string(c.errors) + "\" time=\"" + formatFixed(c.seconds, 3) + "\">\n";
     for (const TestResult& t : task.tests) {
-      xml += "    <testcase classname=\"" + xmlEscape(task.id) + "\" name=\"" + xmlEscape(t.name) +
+      xml += "    <testcase classname=\"" + escapeMarkup(task.id) + "\" name=\"" + escapeMarkup(t.name) +
              "\" time=\"" + formatFixed(t.seconds, 3) + "\"";
       if (t.status == Status::Passed) {
         xml += "/>\n";
@@ -272,19 +218,19 @@ void writeJUnitReport(const GradeResult& result, const std::string& path) {
       }
       const std::string message = t.message.empty() ? statusName(t.status) : t.message;
       if (t.status == Status::Error) {
-        xml += ">\n      <error message=\"" + xmlEscape(message) + "\" type=\"error\">";
-        xml += xmlEscape(t.details, true) + "</error>\n";
+        xml += ">\n      <error message=\"" + escapeMarkup(message) + "\" type=\"error\">";
+        xml += escapeMarkup(t.details, true) + "</error>\n";
       } else {
-        xml += ">\n      <failure message=\"" + xmlEscape(message) + "\" type=\"" +
+        xml += ">\n      <failure message=\"" + escapeMarkup(message) + "\" type=\"" +
                statusName(t.status) + "\">";
-        xml += xmlEscape(t.details, true) + "</failure>\n";
+        xml += escapeMarkup(t.details, true) + "</failure>\n";
       }
       xml += "    </testcase>\n";
     }
     xml += "  </testsuite>\n";
   }
   xml += "</testsuites>\n";
-  writeFile(path, xml);
+  writeTextFile(path, xml);
 }
 
 void writeGradescopeReport(const GradeResult& result, const std::string& path) {
@@ -321,7 +267,7 @@ void writeGradescopeReport(const GradeResult& result, const std::string& path) {
       {"tests", tests},
   };
   // Invalid UTF-8 in test output is replaced rather than thrown on.
-  writeFile(path, doc.dump(2, ' ', false, json::error_handler_t::replace) + "\n");
+  writeTextFile(path, doc.dump(2, ' ', false, json::error_handler_t::replace) + "\n");
 }
 
 }  // namespace ll::grading

@@ -11,6 +11,7 @@
 
 #include "core/error.h"
 #include "grading/grade_reports.h"
+#include "grading/report_text.h"
 
 namespace ll::grading {
 
@@ -20,17 +21,6 @@ namespace fs = std::filesystem;
 
 constexpr int kSmallImageWidth = 256;  // small renders are scaled up to about this width
 
-std::string formatNumber(double v, int decimals = 2) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  std::string s = buf;
-  if (s.find('.') != std::string::npos) {
-    while (!s.empty() && s.back() == '0') s.pop_back();
-    if (!s.empty() && s.back() == '.') s.pop_back();
-  }
-  if (s == "-0") s = "0";
-  return s;
-}
 
 std::string formatG(double v) {
   char buf[64];
@@ -38,39 +28,13 @@ std::string formatG(double v) {
   return buf;
 }
 
-std::string htmlEscape(const std::string& s) {
-  std::string out;
-  out.reserve(s.size());
-  for (char c : s) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      case '\'':
-        out += "&#39;";
-        break;
-      default:  // control characters other than tab and newline are dropped
-        if (static_cast<unsigned char>(c) >= 0x20 || c == '\n' || c == '\t') out += c;
-    }
-  }
-  return out;
-}
 
 // An id attribute (no whitespace allowed) for a task's section.
 std::string anchor(const std::string& taskId) {
   std::string id = "task-" + taskId;
   std::replace_if(
       id.begin(), id.end(), [](char c) { return c == ' ' || c == '\t' || c == '\n'; }, '-');
-  return htmlEscape(id);
+  return escapeMarkup(id, true);
 }
 
 const char* statusClass(Status s) {
@@ -159,14 +123,14 @@ std::string sizeAttributes(const Png& png) {
 std::string imgTag(const Png& png, const std::string& alt, const std::string& cls = "",
                    const std::string& attributes = "") {
   return "<img" + (cls.empty() ? std::string() : " class=\"" + cls + "\"") + " src=\"" +
-         png.dataUri + "\" alt=\"" + htmlEscape(alt) + "\"" +
+         png.dataUri + "\" alt=\"" + escapeMarkup(alt, true) + "\"" +
          (attributes.empty() ? sizeAttributes(png) : attributes) + ">";
 }
 
 std::string figure(const std::optional<Png>& png, const std::string& caption) {
   std::string html = "<figure>";
   html += png ? imgTag(*png, caption) : "<div class=\"missing\">(image missing)</div>";
-  return html + "<figcaption>" + htmlEscape(caption) + "</figcaption></figure>\n";
+  return html + "<figcaption>" + escapeMarkup(caption, true) + "</figcaption></figure>\n";
 }
 
 std::string imageEvidence(const ImageEvidence& images, const fs::path& dir) {
@@ -198,11 +162,11 @@ std::string imageEvidence(const ImageEvidence& images, const fs::path& dir) {
 std::string testHtml(const TestResult& t, const fs::path& dir) {
   std::string html = "<div class=\"test " + std::string(statusClass(t.status)) + "\">\n";
   html += "<div class=\"test-head\">" + badge(t.status) + " <span class=\"name\">" +
-          htmlEscape(t.name) + "</span> <span class=\"meta\">" + htmlEscape(t.kind) +
+          escapeMarkup(t.name, true) + "</span> <span class=\"meta\">" + escapeMarkup(t.kind, true) +
           (t.kind.empty() ? "" : " &middot; ") + "weight " + formatNumber(t.weight, 3) +
           " &middot; " + formatNumber(t.seconds, 2) + " s</span></div>\n";
-  if (!t.message.empty()) html += "<p class=\"message\">" + htmlEscape(t.message) + "</p>\n";
-  if (!t.details.empty()) html += "<pre>" + htmlEscape(t.details) + "</pre>\n";
+  if (!t.message.empty()) html += "<p class=\"message\">" + escapeMarkup(t.message, true) + "</p>\n";
+  if (!t.details.empty()) html += "<pre>" + escapeMarkup(t.details, true) + "</pre>\n";
   if (t.images && t.status == Status::Passed)  // a passed test's pictures on request
     html += "<details><summary>images</summary>\n" + imageEvidence(*t.images, dir) + "</details>\n";
   else if (t.images)
@@ -274,9 +238,9 @@ void writeHtmlReport(const GradeResult& result, const std::string& dir) {
 
   std::string html = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
   html += "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n";
-  html += "<title>" + htmlEscape(name) + " &ndash; grade report</title>\n";
+  html += "<title>" + escapeMarkup(name, true) + " &ndash; grade report</title>\n";
   html += "<style>" + std::string(kStyle) + "</style>\n</head>\n<body>\n<header>\n";
-  html += "<h1>" + htmlEscape(name) + "</h1>\n";
+  html += "<h1>" + escapeMarkup(name, true) + "</h1>\n";
   html += "<p class=\"total\">" + formatNumber(result.score) + " / " +
           formatNumber(result.maxScore) + " points</p>\n";
   html += "<p class=\"meta\">seed " + std::to_string(result.seed) + " &middot; " +
@@ -287,8 +251,8 @@ void writeHtmlReport(const GradeResult& result, const std::string& dir) {
       "<table class=\"scores\">\n<thead><tr><th>Task</th><th>Title</th><th>Score</th>"
       "<th>Status</th></tr></thead>\n<tbody>\n";
   for (const TaskResult& task : result.tasks) {
-    html += "<tr><td><a href=\"#" + anchor(task.id) + "\">" + htmlEscape(task.id) +
-            "</a></td><td>" + htmlEscape(task.title) + "</td><td class=\"score\">" +
+    html += "<tr><td><a href=\"#" + anchor(task.id) + "\">" + escapeMarkup(task.id, true) +
+            "</a></td><td>" + escapeMarkup(task.title, true) + "</td><td class=\"score\">" +
             formatNumber(task.score) + " / " + formatNumber(task.points) + "</td><td>" +
             badge(task.status) + "</td></tr>\n";
   }
@@ -298,7 +262,7 @@ void writeHtmlReport(const GradeResult& result, const std::string& dir) {
 
   for (const TaskResult& task : result.tasks) {
     html += "<section id=\"" + anchor(task.id) + "\">\n<h2>" + badge(task.status) + " " +
-            htmlEscape(task.id) + " " + htmlEscape(task.title) + " <span class=\"meta\">" +
+            escapeMarkup(task.id, true) + " " + escapeMarkup(task.title, true) + " <span class=\"meta\">" +
             formatNumber(task.score) + " / " + formatNumber(task.points) + " points</span></h2>\n";
     if (task.tests.empty()) html += "<p class=\"meta\">(no tests)</p>\n";
     // What needs looking at first: the tests that did not pass, then the rest (each in spec order).
@@ -309,11 +273,7 @@ void writeHtmlReport(const GradeResult& result, const std::string& dir) {
   }
   html += "<script>" + std::string(kScript) + "</script>\n</body>\n</html>\n";
 
-  std::ofstream out(dirPath / "report.html", std::ios::binary);
-  if (!out) throwUserError("cannot write " + path);
-  out.write(html.data(), static_cast<std::streamsize>(html.size()));
-  out.close();
-  if (!out) throwUserError("cannot write " + path);
+  writeTextFile(path, html);
 }
 
 }  // namespace ll::grading
