@@ -1,5 +1,8 @@
 // A4.1 BVH build: choosing where a node splits.
 #include <algorithm>
+#ifdef __SSE__
+#include <xmmintrin.h>
+#endif
 
 #include "a4_tasks.h"
 #include "render/student_task.h"
@@ -56,24 +59,41 @@ size_t sahSplit(std::span<BuildPrim> prims, const Bounds3& bounds, const Bounds3
 
   // One pass over the primitives fills the bins of all three axes. (Plain
   // structs, initialised only as far as used: this runs once per node.)
-  struct Bin {
-    Vec3 lo, hi;
+  // Each bin's box as two 4-float rows (the 4th lane unused): with SSE the
+  // per-primitive min/max is one instruction each.
+  struct alignas(16) Bin {
+    float lo[4], hi[4];
     size_t count;
+    Vec3 min() const { return {lo[0], lo[1], lo[2]}; }
+    Vec3 max() const { return {hi[0], hi[1], hi[2]}; }
   };
   Bin binsOf[3][kMaxBins];
   Vec3 scale(0.0f);  // 0 on an axis without extent: everything lands in bin 0 and the axis is skipped
   for (int axis = 0; axis < 3; ++axis) {
     const float extent = cb.max[axis] - cb.min[axis];
     if (extent > 0.0f) scale[axis] = static_cast<float>(bins) / extent;
-    for (int i = 0; i < bins; ++i) binsOf[axis][i] = {Vec3(kInfinity), Vec3(-kInfinity), 0};
+    for (int i = 0; i < bins; ++i) binsOf[axis][i] = {{kInfinity, kInfinity, kInfinity, 0.0f},
+                                                      {-kInfinity, -kInfinity, -kInfinity, 0.0f}, 0};
   }
-  for (const BuildPrim& p : prims)
+  for (const BuildPrim& p : prims) {
+#ifdef __SSE__
+    const __m128 lo = _mm_setr_ps(p.bounds.min.x, p.bounds.min.y, p.bounds.min.z, 0.0f);
+    const __m128 hi = _mm_setr_ps(p.bounds.max.x, p.bounds.max.y, p.bounds.max.z, 0.0f);
+#endif
     for (int axis = 0; axis < 3; ++axis) {
       Bin& bin = binsOf[axis][std::min(bins - 1, static_cast<int>((p.centroid[axis] - cb.min[axis]) * scale[axis]))];
-      bin.lo = glm::min(bin.lo, p.bounds.min);
-      bin.hi = glm::max(bin.hi, p.bounds.max);
+#ifdef __SSE__
+      _mm_store_ps(bin.lo, _mm_min_ps(_mm_load_ps(bin.lo), lo));
+      _mm_store_ps(bin.hi, _mm_max_ps(_mm_load_ps(bin.hi), hi));
+#else
+      for (int k = 0; k < 3; ++k) {
+        bin.lo[k] = std::min(bin.lo[k], p.bounds.min[k]);
+        bin.hi[k] = std::max(bin.hi[k], p.bounds.max[k]);
+      }
+#endif
       ++bin.count;
     }
+  }
 
   float bestCost = kInfinity;
   int bestAxis = -1, bestBoundary = 0;  // left = bins [0, bestBoundary)
@@ -86,8 +106,8 @@ size_t sahSplit(std::span<BuildPrim> prims, const Bounds3& bounds, const Bounds3
     Bounds3 acc;
     size_t count = 0;
     for (int i = bins - 1; i > 0; --i) {
-      acc.min = glm::min(acc.min, bin[i].lo);  // (an empty bin's lo is +inf, its hi -inf)
-      acc.max = glm::max(acc.max, bin[i].hi);
+      acc.min = glm::min(acc.min, bin[i].min());  // (an empty bin's lo is +inf, its hi -inf)
+      acc.max = glm::max(acc.max, bin[i].max());
       count += bin[i].count;
       rightArea[i] = halfArea(acc);
       rightCount[i] = count;
@@ -95,8 +115,8 @@ size_t sahSplit(std::span<BuildPrim> prims, const Bounds3& bounds, const Bounds3
     acc = Bounds3{};
     count = 0;
     for (int i = 1; i < bins; ++i) {
-      acc.min = glm::min(acc.min, bin[i - 1].lo);
-      acc.max = glm::max(acc.max, bin[i - 1].hi);
+      acc.min = glm::min(acc.min, bin[i - 1].min());
+      acc.max = glm::max(acc.max, bin[i - 1].max());
       count += bin[i - 1].count;
       const size_t nRight = rightCount[i];
       if (count == 0 || nRight == 0) continue;
