@@ -1,4 +1,4 @@
-// The `lightlab` command line: render, info, trace, compare, radiosity, grade, and gui when built with it.
+// The `lightlab` command line: render, info, trace, compare, radiosity, grade, study, and gui when built with it.
 // Any bad input ends with one line on stderr and a non-zero exit status.
 #include <cstdio>
 #include <exception>
@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
       {"compare", addCompareCommand(app, global)},
       {"radiosity", addRadiosityCommand(app, global)},
       {"grade", addGradeCommand(app, global)},
+      {"study", addStudyCommand(app, global)},
   };
 #ifdef LIGHTLAB_HAVE_GUI
   commands["gui"] = addGuiCommand(app, global);

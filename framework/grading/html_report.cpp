@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 
+#include "core/base64.h"
 #include "core/error.h"
 #include "grading/grade_reports.h"
 #include "grading/report_text.h"
@@ -55,32 +56,6 @@ std::string badge(Status s) {
   return std::string("<span class=\"badge ") + statusClass(s) + "\">" + statusName(s) + "</span>";
 }
 
-std::string base64(const std::string& bytes) {
-  static const char kAlphabet[] =
-      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  auto byte = [&bytes](size_t i) {
-    return static_cast<uint32_t>(static_cast<unsigned char>(bytes[i]));
-  };
-  std::string out;
-  out.reserve((bytes.size() + 2) / 3 * 4);
-  size_t i = 0;
-  for (; i + 2 < bytes.size(); i += 3) {
-    const uint32_t v = byte(i) << 16 | byte(i + 1) << 8 | byte(i + 2);
-    out += kAlphabet[v >> 18 & 63];
-    out += kAlphabet[v >> 12 & 63];
-    out += kAlphabet[v >> 6 & 63];
-    out += kAlphabet[v & 63];
-  }
-  const size_t rest = bytes.size() - i;
-  if (rest > 0) {
-    const uint32_t v = byte(i) << 16 | (rest == 2 ? byte(i + 1) << 8 : 0u);
-    out += kAlphabet[v >> 18 & 63];
-    out += kAlphabet[v >> 12 & 63];
-    out += rest == 2 ? kAlphabet[v >> 6 & 63] : '=';
-    out += '=';
-  }
-  return out;
-}
 
 // A PNG as embedded bytes, with its size from the IHDR chunk (0 if unreadable).
 struct Png {

@@ -111,3 +111,11 @@ lightlab_error_test(grade_unknown_reference "unknown_reference\\.json:6:[0-9]+: 
                     grade ${GRADING_BAD}/unknown_reference.json --report ${OUT}/grade_bad)
 lightlab_error_test(grade_missing_task_tests "grade: no task tests at /nope \\(build them"
                     grade A2 --task-tests /nope --report ${OUT}/grade_bad)
+
+# Study: accuracy against time.
+add_test(NAME cli.study_error_falls_with_light_samples
+         COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/study_test.sh ${LL} ${OUT}/study)
+lightlab_error_test(study_bad_knob "study: --knob must be NAME=v1,v2,... \\(got 'spp'\\)"
+                    study ${SCENES}/cornell_box.json --knob spp --out ${OUT}/study_bad)
+lightlab_error_test(study_unknown_parameter "technique 'raycast' has no parameter 'depth' \\(parameters: "
+                    study ${SCENES}/cornell_box.json --knob depth=1,2 --out ${OUT}/study_bad)

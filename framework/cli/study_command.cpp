@@ -1,0 +1,244 @@
+// lightlab study SCENE --knob NAME=v1,v2,... [-t TECH[,TECH...]] [-a ACCEL] [--set name=value ...]
+//                [--width W --height H] [--spp N] [--seed S]
+//                [--reference IMG | --reference-technique T --reference-spp N --reference-set name=value ...]
+//                --out DIR
+// What accuracy costs in time: renders the scene once per knob value (and per
+// technique), times each (accelerator build + render, seconds of wall time),
+// measures its error against a reference, and writes DIR/study.csv, the
+// images, and DIR/study.html (error against time, log-log, with the images).
+// The knob is any technique or accelerator parameter, "spp", or "accel" (the
+// accelerator's name). The reference is an image file, or rendered once
+// (DIR/reference.pfm) by the reference technique (default: the first one) at
+// --reference-spp samples (default: 256 if the knob is spp, else --spp) with
+// the --reference-set changes (for example light_samples=1024).
+#include <cctype>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <unistd.h>
+
+#include "cli/commands.h"
+#include "cli/scene_setup.h"
+#include "core/base64.h"
+#include "core/error.h"
+#include "core/progress.h"
+#include "core/subprocess.h"
+#include "core/timer.h"
+#include "metrics/error_plot.h"
+#include "metrics/image_metrics.h"
+#include "modules/registry.h"
+#include "render/render_job.h"
+
+namespace ll::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct StudyOptions {
+  std::string scene, knob, out, reference, referenceTechnique;
+  std::vector<std::string> techniques = {"raycast"}, sets, referenceSets;
+  std::string accelerator = "bvh";
+  int width = 160, height = 0, spp = 1, referenceSpp = 0;  // 0: 256 when the knob is spp, else --spp
+  unsigned seed = 1;
+};
+
+struct Run {
+  std::string technique, value, image;
+  double buildSeconds = 0.0, renderSeconds = 0.0;
+  uint64_t rays = 0;
+  ImageError error;
+};
+
+// One render: the study's settings with `changes` (name=value; "spp" and "accel" are ours).
+Image render(const StudyOptions& o, const std::string& technique, std::vector<std::string> changes, Run* run) {
+  std::string accel = o.accelerator;
+  int spp = o.spp;
+  std::vector<std::string> sets = o.sets;
+  for (const std::string& c : changes) {
+    const std::string name = c.substr(0, c.find('=')), value = c.substr(c.find('=') + 1);
+    if (name == "accel") {
+      accel = value;
+    } else if (name == "spp") {
+      try {
+        spp = std::stoi(value);
+      } catch (const std::exception&) {
+        spp = 0;
+      }
+      if (spp < 1 || spp > 1 << 20) throwUserError("study: spp=" + value + " is not a sample count (1..1048576)");
+    } else {
+      sets.push_back(c);
+    }
+  }
+  SceneSetup s = setUpScene(o.scene, technique, accel, sets);
+  RenderSettings settings;
+  settings.width = o.width;
+  settings.height = o.height > 0 ? o.height : std::max(1, o.width * s.scene.camera.height / s.scene.camera.width);
+  settings.spp = spp;
+  settings.seed = o.seed;
+  const auto t = s.technique->make();
+  RenderJob job(s.scene, *s.accel, *t, s.techniqueParams, settings);
+  const Timer timer;
+  job.run();
+  if (run) {
+    run->buildSeconds = s.buildSeconds;
+    run->renderSeconds = timer.seconds();
+    run->rays = job.stats().work.totalRays();
+  }
+  return job.frame().resolve(false);
+}
+
+// Letters, digits, '.', '-' kept; anything else becomes '_'.
+std::string fileSafe(std::string s) {
+  for (char& c : s)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '-') c = '_';
+  return s;
+}
+
+std::string pngDataUri(const Image& image) {
+  const fs::path tmp = fs::temp_directory_path() / ("lightlab_study_" + std::to_string(::getpid()) + ".png");
+  saveImage(image, tmp.string());
+  const std::string bytes = readTextFile(tmp.string());
+  fs::remove(tmp);
+  return "data:image/png;base64," + base64(bytes);
+}
+
+}  // namespace
+
+Command addStudyCommand(CLI::App& app, const GlobalOptions& global) {
+  auto o = std::make_shared<StudyOptions>();
+  CLI::App* cmd = app.add_subcommand("study", "Accuracy against time: sweep a knob, time each render, plot its error");
+  cmd->add_option("scene", o->scene, "Scene file (.json or .obj)")->required();
+  cmd->add_option("--knob", o->knob, "NAME=v1,v2,...: a technique or accelerator parameter, spp, or accel")->required();
+  cmd->add_option("-t,--technique", o->techniques, "Technique(s), comma separated: one curve each")
+      ->delimiter(',')
+      ->capture_default_str();
+  cmd->add_option("-a,--accel", o->accelerator, "Accelerator")->capture_default_str();
+  cmd->add_option("--set", o->sets, "Parameter of every render, name=value (repeatable)");
+  cmd->add_option("--width", o->width, "Image width in pixels")->capture_default_str()->check(CLI::Range(1, 8192));
+  cmd->add_option("--height", o->height, "Image height (default: the camera's aspect)")->check(CLI::Range(0, 8192));
+  cmd->add_option("--spp", o->spp, "Samples per pixel (unless the knob is spp)")->capture_default_str()->check(CLI::Range(1, 1 << 20));
+  cmd->add_option("--seed", o->seed, "Seed of the random streams")->capture_default_str();
+  cmd->add_option("--reference", o->reference, "Reference image (.pfm/.hdr/.png) instead of rendering one");
+  cmd->add_option("--reference-technique", o->referenceTechnique, "Technique of the rendered reference (default: the first)");
+  cmd->add_option("--reference-spp", o->referenceSpp,
+                  "Samples per pixel of the rendered reference (default: 256 if the knob is spp, else --spp)")
+      ->check(CLI::Range(1, 1 << 20));
+  cmd->add_option("--reference-set", o->referenceSets, "Parameter change of the rendered reference, name=value");
+  cmd->add_option("--out", o->out, "Output folder: study.csv, study.html, images")->required();
+  return [o, &global]() {
+    const auto eq = o->knob.find('=');
+    if (eq == std::string::npos || eq == 0 || eq + 1 == o->knob.size())
+      throwUserError("study: --knob must be NAME=v1,v2,... (got '" + o->knob + "')");
+    const std::string knob = o->knob.substr(0, eq);
+    std::vector<std::string> values;
+    std::stringstream list(o->knob.substr(eq + 1));
+    for (std::string v; std::getline(list, v, ',');)
+      if (!v.empty()) values.push_back(v);
+    if (values.empty()) throwUserError("study: --knob " + knob + "= lists no values");
+    // The knob must exist for every technique (or the accelerator) before anything renders.
+    if (knob != "spp" && knob != "accel")
+      for (const std::string& t : o->techniques) {
+        ParamSet tp("technique '" + t + "'", findTechnique(t).params);
+        const ParamSet ap("accelerator '" + o->accelerator + "'", findAccelerator(o->accelerator).params);
+        if (!tp.has(knob) && !ap.has(knob)) tp.assign(knob + "=" + values.front());  // throws, naming the parameters
+      }
+    std::error_code ec;
+    fs::create_directories(fs::path(o->out) / "images", ec);
+    if (ec) throwUserError("study: cannot create " + o->out + ": " + ec.message());
+
+    // The reference.
+    Image reference;
+    if (!o->reference.empty()) {
+      reference = loadImage(o->reference);
+    } else {
+      std::vector<std::string> changes = o->referenceSets;
+      const int spp = o->referenceSpp > 0 ? o->referenceSpp : knob == "spp" ? 256 : o->spp;
+      changes.push_back("spp=" + std::to_string(spp));
+      const std::string technique = o->referenceTechnique.empty() ? o->techniques.front() : o->referenceTechnique;
+      reference = render(*o, technique, changes, nullptr);
+      if (!global.quiet) std::fprintf(stderr, "study: reference rendered (%s, %d spp)\n", technique.c_str(), spp);
+      saveImage(reference, (fs::path(o->out) / "reference.pfm").string());
+    }
+
+    std::vector<Run> runs;
+    ProgressBar progress("study " + knob, static_cast<double>(values.size() * o->techniques.size()), global.quiet);
+    for (const std::string& technique : o->techniques)
+      for (const std::string& v : values) {
+        Run run;
+        run.technique = technique;
+        run.value = v;
+        const Image image = render(*o, technique, {knob + "=" + v}, &run);
+        if (image.width() != reference.width() || image.height() != reference.height())
+          throwUserError("study: the reference is " + std::to_string(reference.width()) + "x" +
+                         std::to_string(reference.height()) + ", the renders " + std::to_string(image.width()) + "x" +
+                         std::to_string(image.height()) + " (set --width/--height)");
+        run.error = compareImages(image, reference);
+        run.image = "images/" + fileSafe(technique + "_" + knob + "_" + v) + ".png";
+        saveImage(image, (fs::path(o->out) / run.image).string());
+        runs.push_back(run);
+        progress.update(static_cast<double>(runs.size()));
+      }
+    progress.finish();
+
+    // study.csv
+    const std::string csvPath = (fs::path(o->out) / "study.csv").string();
+    std::ofstream csv(csvPath);
+    if (!csv) throwUserError("study: cannot write " + csvPath);
+    csv << "technique," << knob << ",seconds,build_seconds,render_seconds,rays,rmse,relmse,ssim,image\n";
+    for (const Run& r : runs)
+      csv << r.technique << "," << r.value << "," << r.buildSeconds + r.renderSeconds << "," << r.buildSeconds << ","
+          << r.renderSeconds << "," << r.rays << "," << r.error.rmse << "," << r.error.relmse << "," << r.error.ssim
+          << "," << r.image << "\n";
+    csv.close();
+
+    // study.html: the plot and the images, all inline.
+    std::vector<PlotSeries> series;
+    for (const std::string& technique : o->techniques) {
+      PlotSeries s{technique, {}};
+      for (const Run& r : runs)
+        if (r.technique == technique)
+          s.points.push_back({r.buildSeconds + r.renderSeconds, r.error.relmse, knob + "=" + r.value});
+      series.push_back(s);
+    }
+    const std::string title = fs::path(o->scene).filename().string() + ": relMSE against time, knob " + knob;
+    std::ostringstream html;
+    html << "<!DOCTYPE html>\n<html lang='en'><head><meta charset='utf-8'><title>" << title
+         << "</title><style>body{font:15px/1.4 sans-serif;margin:24px;background:#f6f6f4}table{border-collapse:"
+            "collapse;background:#fff}td,th{padding:3px 10px;border-bottom:1px solid #ddd;text-align:right}"
+            "figure{display:inline-block;margin:6px}img{image-rendering:pixelated;width:200px}figcaption{font-size:"
+            "12px;text-align:center}</style></head><body>\n<h1>"
+         << title << "</h1>\n"
+         << logLogSvg(series, title, "seconds (accelerator build + render)", "relMSE against the reference")
+         << "<table><tr><th>technique</th><th>" << knob
+         << "</th><th>seconds</th><th>build</th><th>render</th><th>rays</th><th>relMSE</th><th>RMSE</th><th>SSIM</th></tr>\n";
+    for (const Run& r : runs) {
+      char row[512];
+      std::snprintf(row, sizeof(row),
+                    "<tr><td>%s</td><td>%s</td><td>%.4g</td><td>%.4g</td><td>%.4g</td><td>%llu</td><td>%.3g</td>"
+                    "<td>%.3g</td><td>%.4f</td></tr>\n",
+                    r.technique.c_str(), r.value.c_str(), r.buildSeconds + r.renderSeconds, r.buildSeconds,
+                    r.renderSeconds, static_cast<unsigned long long>(r.rays), r.error.relmse, r.error.rmse,
+                    r.error.ssim);
+      html << row;
+    }
+    html << "</table>\n<h2>Images</h2>\n<figure><img src='" << pngDataUri(reference)
+         << "'><figcaption>reference</figcaption></figure>\n";
+    for (const Run& r : runs)
+      html << "<figure><img src='" << pngDataUri(loadImage((fs::path(o->out) / r.image).string())) << "'><figcaption>"
+           << r.technique << " " << knob << "=" << r.value << "</figcaption></figure>\n";
+    html << "</body></html>\n";
+    const std::string htmlPath = (fs::path(o->out) / "study.html").string();
+    std::ofstream page(htmlPath);
+    if (!page) throwUserError("study: cannot write " + htmlPath);
+    page << html.str();
+    for (const Run& r : runs)
+      std::printf("%-12s %s=%-8s %9.4f s  relMSE %.3g  SSIM %.4f\n", r.technique.c_str(), knob.c_str(), r.value.c_str(),
+                  r.buildSeconds + r.renderSeconds, r.error.relmse, r.error.ssim);
+    std::printf("wrote %s and %s\n", csvPath.c_str(), htmlPath.c_str());
+  };
+}
+
+}  // namespace ll::cli
