@@ -2,6 +2,7 @@
 //                [--width W --height H] [--spp N] [--seed S]
 //                [--reference IMG | --reference-technique T --reference-spp N --reference-set name=value ...]
 //                --out DIR
+// lightlab study BUILTIN --out DIR   (raycast-spp, whitted-depth, radiosity-patch-size, ...: see --help)
 // What accuracy costs in time: renders the scene once per knob value (and per
 // technique), times each (accelerator build + render, seconds of wall time),
 // measures its error against a reference, and writes DIR/study.csv, the
@@ -45,6 +46,44 @@ struct StudyOptions {
   unsigned seed = 1;
 };
 
+// The built-in studies: one command each (lightlab study NAME --out DIR).
+struct BuiltinStudy {
+  const char* name;
+  const char* what;
+  const char* scene;  // under data/scenes
+  const char* knob;
+  std::vector<std::string> techniques, sets, referenceSets;
+  const char* referenceTechnique;
+  int width, spp, referenceSpp;
+};
+
+const std::vector<BuiltinStudy>& builtinStudies() {
+  static const std::vector<BuiltinStudy> studies = {
+      {"raycast-spp", "ray casting: samples per pixel (anti-aliasing and soft shadows)", "cornell_box.json",
+       "spp=1,4,16,64", {"raycast"}, {"intersection=framework", "light_samples=4"}, {}, "", 128, 1, 256},
+      {"raycast-light-samples", "ray casting: shadow rays per area light", "cornell_box.json",
+       "light_samples=1,4,16,64", {"raycast"}, {"intersection=framework"}, {"light_samples=1024"}, "", 128, 1, 1},
+      {"whitted-depth", "Whitted: recursion depth", "whitted_1980.json", "max_depth=0,1,2,3,4,6",
+       {"whitted"}, {}, {"max_depth=16"}, "", 160, 1, 1},
+      {"radiosity-patch-size", "radiosity: patch size (meshing, form factors and solve)", "cornell_box.json",
+       "patch_size=0.3,0.2,0.12,0.08", {"radiosity"}, {"hemicube_res=16"}, {"patch_size=0.05"}, "", 96, 1, 1},
+      {"radiosity-form-factors", "radiosity: form-factor method", "cornell_box.json",
+       "form_factors=hemicube,analytic,montecarlo", {"radiosity"}, {"patch_size=0.12"},
+       {"form_factors=analytic", "visibility_samples=16"}, "", 96, 1, 1},
+      {"radiosity-iterations", "radiosity: Jacobi iterations (the Neumann series, term by term)", "cornell_box.json",
+       "max_iterations=1,2,4,8,16,32", {"radiosity"}, {"patch_size=0.12", "solver=jacobi", "tolerance=1e-9"},
+       {"max_iterations=1000"}, "", 96, 1, 1},
+      {"raster-shading", "rasterizer: shading frequency against the ray-cast image", "bunny.json",
+       "shading=flat,gouraud,phong", {"blinn-phong"}, {"samples=4"}, {"intersection=framework"}, "raycast", 160, 1,
+       4},
+      {"raster-samples", "rasterizer: supersampling", "cornell_box.json", "samples=1,4,16", {"blinn-phong"}, {},
+       {"samples=16"}, "", 128, 1, 4},
+      {"accel", "accelerators: build + trace time (all exact, so the error is 0)", "cornell_bunny.json",
+       "accel=none,bvh,kdtree,octree", {"raycast"}, {"intersection=framework", "light_samples=4"}, {}, "", 96, 1, 1},
+  };
+  return studies;
+}
+
 struct Run {
   std::string technique, value, image;
   double buildSeconds = 0.0, renderSeconds = 0.0;
@@ -53,10 +92,10 @@ struct Run {
 };
 
 // One render: the study's settings with `changes` (name=value; "spp" and "accel" are ours).
-Image render(const StudyOptions& o, const std::string& technique, std::vector<std::string> changes, Run* run) {
+Image render(const StudyOptions& o, const std::string& technique, const std::vector<std::string>& changes, Run* run) {
   std::string accel = o.accelerator;
   int spp = o.spp;
-  std::vector<std::string> sets = o.sets;
+  std::vector<std::string> extra;  // the knob's or the reference's changes: must fit this technique
   for (const std::string& c : changes) {
     const std::string name = c.substr(0, c.find('=')), value = c.substr(c.find('=') + 1);
     if (name == "accel") {
@@ -69,9 +108,19 @@ Image render(const StudyOptions& o, const std::string& technique, std::vector<st
       }
       if (spp < 1 || spp > 1 << 20) throwUserError("study: spp=" + value + " is not a sample count (1..1048576)");
     } else {
-      sets.push_back(c);
+      extra.push_back(c);
     }
   }
+  // A --set applies where it is declared (this technique or the accelerator): with several techniques,
+  // one's parameter is no error for another (each --set is checked once, up front).
+  std::vector<std::string> sets;
+  const ParamSet tp("technique", findTechnique(technique).params);
+  const ParamSet ap("accelerator", findAccelerator(accel).params);
+  for (const std::string& a : o.sets) {
+    const std::string name = a.substr(0, a.find('='));
+    if (tp.has(name) || ap.has(name)) sets.push_back(a);
+  }
+  sets.insert(sets.end(), extra.begin(), extra.end());
   SceneSetup s = setUpScene(o.scene, technique, accel, sets);
   RenderSettings settings;
   settings.width = o.width;
@@ -110,8 +159,10 @@ std::string pngDataUri(const Image& image) {
 Command addStudyCommand(CLI::App& app, const GlobalOptions& global) {
   auto o = std::make_shared<StudyOptions>();
   CLI::App* cmd = app.add_subcommand("study", "Accuracy against time: sweep a knob, time each render, plot its error");
-  cmd->add_option("scene", o->scene, "Scene file (.json or .obj)")->required();
-  cmd->add_option("--knob", o->knob, "NAME=v1,v2,...: a technique or accelerator parameter, spp, or accel")->required();
+  std::string builtinHelp;
+  for (const BuiltinStudy& b : builtinStudies()) builtinHelp += std::string("\n  ") + b.name + ": " + b.what;
+  cmd->add_option("scene", o->scene, "Scene file (.json or .obj), or a built-in study:" + builtinHelp)->required();
+  cmd->add_option("--knob", o->knob, "NAME=v1,v2,...: a technique or accelerator parameter, spp, or accel");
   cmd->add_option("-t,--technique", o->techniques, "Technique(s), comma separated: one curve each")
       ->delimiter(',')
       ->capture_default_str();
@@ -129,6 +180,19 @@ Command addStudyCommand(CLI::App& app, const GlobalOptions& global) {
   cmd->add_option("--reference-set", o->referenceSets, "Parameter change of the rendered reference, name=value");
   cmd->add_option("--out", o->out, "Output folder: study.csv, study.html, images")->required();
   return [o, &global]() {
+    for (const BuiltinStudy& b : builtinStudies()) {
+      if (o->scene != b.name) continue;
+      o->scene = std::string(LIGHTLAB_SOURCE_DIR) + "/data/scenes/" + b.scene;
+      if (o->knob.empty()) o->knob = b.knob;
+      o->techniques = b.techniques;
+      o->sets.insert(o->sets.begin(), b.sets.begin(), b.sets.end());
+      if (o->referenceSets.empty()) o->referenceSets = b.referenceSets;
+      if (o->referenceTechnique.empty()) o->referenceTechnique = b.referenceTechnique;
+      o->width = b.width;
+      o->spp = b.spp;
+      if (o->referenceSpp == 0) o->referenceSpp = b.referenceSpp;
+    }
+    if (o->knob.empty()) throwUserError("study: --knob NAME=v1,v2,... is needed (unless SCENE names a built-in study)");
     const auto eq = o->knob.find('=');
     if (eq == std::string::npos || eq == 0 || eq + 1 == o->knob.size())
       throwUserError("study: --knob must be NAME=v1,v2,... (got '" + o->knob + "')");
@@ -139,6 +203,12 @@ Command addStudyCommand(CLI::App& app, const GlobalOptions& global) {
       if (!v.empty()) values.push_back(v);
     if (values.empty()) throwUserError("study: --knob " + knob + "= lists no values");
     // The knob must exist for every technique (or the accelerator) before anything renders.
+    for (const std::string& a : o->sets) {  // every --set is some technique's or the accelerator's
+      const std::string name = a.substr(0, a.find('='));
+      bool known = ParamSet("accelerator", findAccelerator(o->accelerator).params).has(name);
+      for (const std::string& t : o->techniques) known = known || ParamSet("t", findTechnique(t).params).has(name);
+      if (!known) ParamSet("technique '" + o->techniques.front() + "'", findTechnique(o->techniques.front()).params).assign(a);
+    }
     if (knob != "spp" && knob != "accel")
       for (const std::string& t : o->techniques) {
         ParamSet tp("technique '" + t + "'", findTechnique(t).params);

@@ -135,17 +135,26 @@ TEST(StratifiedOffset, SixteenSamplesFillEachStratumOnce) {
   }
 }
 
-TEST(StratifiedOffset, NonSquareCountsUseDistinctStrataOfTheCeilGrid) {
-  // 5 samples: a 3x3 grid, each sample in its own cell.
-  std::set<int> cells;
+TEST(StratifiedOffset, NonSquareCountsTileThePixelWithColumns) {
+  // 5 samples: 5 columns, one sample in each (a 3x3 grid would leave 4 of its 9 cells, and so part of
+  // the pixel, unsampled: a biased average).
+  std::set<int> columns;
   Rng rng(4, 4);
   for (int i = 0; i < 5; ++i) {
     const Vec2 o = stratifiedOffset(i, 5, rng);
     ASSERT_GE(minComponent(Vec3(o, 0.5f)), 0.0f);
     ASSERT_LT(maxComponent(Vec3(o, 0.5f)), 1.0f);
-    cells.insert(static_cast<int>(o.y * 3.0f) * 3 + static_cast<int>(o.x * 3.0f));
+    columns.insert(static_cast<int>(o.x * 5.0f));
   }
-  EXPECT_EQ(cells.size(), 5u);
+  EXPECT_EQ(columns.size(), 5u);
+  // Unbiased: over many pixels the mean offset of 8 samples is the pixel centre in both axes.
+  Vec2 sum(0.0f);
+  for (uint64_t p = 0; p < 20000; ++p) {
+    Rng r(p, 1);
+    for (int i = 0; i < 8; ++i) sum += stratifiedOffset(i, 8, r);
+  }
+  EXPECT_NEAR(sum.x / 160000.0f, 0.5f, 3e-3f);
+  EXPECT_NEAR(sum.y / 160000.0f, 0.5f, 3e-3f);
   // The jitter inside a stratum comes from the rng: the same rng state gives the same offset.
   Rng r1(8, 8), r2(8, 8);
   EXPECT_EQ(stratifiedOffset(3, 16, r1), stratifiedOffset(3, 16, r2));

@@ -12,10 +12,16 @@ namespace ll {
 
 Vec2 stratifiedOffset(int index, int count, Rng& rng) {
   if (count <= 1) return Vec2(0.5f);
-  const int n = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(count))));
-  const int cell = index % (n * n);
   const Vec2 jitter = rng.uniform2();
-  return (Vec2(static_cast<float>(cell % n), static_cast<float>(cell / n)) + jitter) / static_cast<float>(n);
+  const int n = static_cast<int>(std::lround(std::sqrt(static_cast<double>(count))));
+  if (n * n == count) {  // an n x n grid, one jittered sample per cell
+    const int cell = index % count;
+    return (Vec2(static_cast<float>(cell % n), static_cast<float>(cell / n)) + jitter) / static_cast<float>(n);
+  }
+  // Otherwise `count` columns, one sample anywhere in each: the strata must tile the pixel, or the
+  // estimate is biased (8 of the 9 cells of a 3 x 3 grid leave a ninth of the pixel unsampled).
+  const int column = index % count;
+  return Vec2((static_cast<float>(column) + jitter.x) / static_cast<float>(count), jitter.y);
 }
 
 void PixelTechnique::renderPass(const RenderContext& ctx, int pass, FrameBuffer& fb, WorkCounters& counters,

@@ -101,7 +101,9 @@ class PixelTechnique : public Technique {
 };
 
 // Sample position inside the unit pixel for sample `index` of `count`:
-// the pixel centre for count 1, else jittered strata of a ceil(sqrt(count))^2 grid.
+// the pixel centre for count 1; for a square count n^2, a jittered n x n
+// grid; else `count` jittered columns (strata that tile the pixel, so the
+// average is unbiased for any count).
 Vec2 stratifiedOffset(int index, int count, Rng& rng);
 
 struct TechniqueInfo {
