@@ -50,22 +50,9 @@ std::string padLeft(const std::string& s, size_t width) {
   return w >= width ? s : std::string(width - w, ' ') + s;
 }
 
-const char* statusColour(Status s) {
-  switch (s) {
-    case Status::Passed:
-      return "\x1b[32m";
-    case Status::Failed:
-      return "\x1b[31m";
-    case Status::NotImplemented:
-      return "\x1b[33m";
-    case Status::Error:
-      return "\x1b[31m";
-  }
-  return "";
-}
 
 std::string coloured(const std::string& text, Status s, bool colour) {
-  return colour ? statusColour(s) + text + "\x1b[0m" : text;
+  return colour ? statusStyle(s).ansiColour + text + "\x1b[0m" : text;
 }
 
 double totalWeight(const TaskResult& task) {
@@ -82,18 +69,14 @@ double round4(double v) {
 
 }  // namespace
 
-const char* statusName(Status s) {
-  switch (s) {
-    case Status::Passed:
-      return "passed";
-    case Status::Failed:
-      return "failed";
-    case Status::NotImplemented:
-      return "not implemented";
-    case Status::Error:
-      return "error";
-  }
-  return "error";
+const StatusStyle& statusStyle(Status s) {
+  static const StatusStyle styles[] = {
+      {"passed", "passed", "\x1b[32m"},                    // green
+      {"failed", "failed", "\x1b[31m"},                    // red
+      {"not implemented", "notimpl", "\x1b[33m"},          // yellow
+      {"error", "error", "\x1b[31m"},                      // red
+  };
+  return styles[static_cast<int>(s)];
 }
 
 void finalizeScores(GradeResult& result) {

@@ -17,8 +17,15 @@ enum class Status {
   Error,           // crashed, timed out, or could not run
 };
 
-// "passed", "failed", "not implemented", "error".
-const char* statusName(Status s);
+// How each status is shown: its name ("passed", "failed", "not implemented",
+// "error"), the HTML report's CSS class and the terminal's ANSI colour.
+struct StatusStyle {
+  const char* name;
+  const char* cssClass;
+  const char* ansiColour;
+};
+const StatusStyle& statusStyle(Status s);
+inline const char* statusName(Status s) { return statusStyle(s).name; }
 
 // Images of an image test, as PNG files (sRGB, for people) inside the report
 // folder; paths relative to that folder. Empty when not written.

@@ -38,22 +38,9 @@ std::string anchor(const std::string& taskId) {
   return escapeMarkup(id, true);
 }
 
-const char* statusClass(Status s) {
-  switch (s) {
-    case Status::Passed:
-      return "passed";
-    case Status::Failed:
-      return "failed";
-    case Status::NotImplemented:
-      return "notimpl";
-    case Status::Error:
-      return "error";
-  }
-  return "error";
-}
 
 std::string badge(Status s) {
-  return std::string("<span class=\"badge ") + statusClass(s) + "\">" + statusName(s) + "</span>";
+  return std::string("<span class=\"badge ") + statusStyle(s).cssClass + "\">" + statusName(s) + "</span>";
 }
 
 
@@ -135,7 +122,7 @@ std::string imageEvidence(const ImageEvidence& images, const fs::path& dir) {
 }
 
 std::string testHtml(const TestResult& t, const fs::path& dir) {
-  std::string html = "<div class=\"test " + std::string(statusClass(t.status)) + "\">\n";
+  std::string html = "<div class=\"test " + std::string(statusStyle(t.status).cssClass) + "\">\n";
   html += "<div class=\"test-head\">" + badge(t.status) + " <span class=\"name\">" +
           escapeMarkup(t.name, true) + "</span> <span class=\"meta\">" + escapeMarkup(t.kind, true) +
           (t.kind.empty() ? "" : " &middot; ") + "weight " + formatNumber(t.weight, 3) +
