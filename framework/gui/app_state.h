@@ -139,6 +139,7 @@ struct AppState {
   bool draggingWipe = false;
   bool draggingView = false;  // a mouse drag that started over the image area
   int settledFrames = 0;      // --screenshot: frames drawn since every pane finished
+  uint64_t settledPosts = 0;  // --screenshot: background jobs posted when that count last grew
 
   // --- files and messages ------------------------------------------------------
   char presetInput[512] = "preset.json";

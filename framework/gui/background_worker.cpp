@@ -17,6 +17,7 @@ BackgroundWorker::~BackgroundWorker() {
 }
 
 void BackgroundWorker::post(const std::string& slot, std::function<void()> job) {
+  posted_.fetch_add(1, std::memory_order_relaxed);
   {
     std::lock_guard lock(mutex_);
     const auto it =

@@ -6,7 +6,9 @@
 // could pick up a render tile and stall a frame.
 #pragma once
 
+#include <atomic>
 #include <condition_variable>
+#include <cstdint>
 #include <deque>
 #include <functional>
 #include <mutex>
@@ -27,6 +29,8 @@ class BackgroundWorker {
   void post(const std::string& slot, std::function<void()> job);
   // Blocks until every posted job has run (tests and screenshots).
   void drain();
+  // Jobs posted so far: a screenshot waits until a drained frame posted none.
+  uint64_t posted() const { return posted_.load(std::memory_order_relaxed); }
 
  private:
   void loop();
@@ -34,6 +38,7 @@ class BackgroundWorker {
   std::condition_variable wake_, idle_;
   std::deque<std::pair<std::string, std::function<void()>>> queue_;
   bool running_ = false, quit_ = false;
+  std::atomic<uint64_t> posted_{0};
   std::thread thread_;
 };
 

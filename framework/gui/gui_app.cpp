@@ -245,11 +245,14 @@ int runGui(const GuiOptions& options) {
         const double elapsed =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
         const bool timedOut = elapsed > options.screenshotTimeout;
-        // Two frames after everything finished, so the last images are uploaded and drawn.
+        // Two frames after everything finished and the last background job (display bytes, the
+        // heatmap, errors) was posted and drained, so its result is collected and drawn.
         const bool finished = allPanesFinished(app);
         if (finished)
           app.background->drain();  // display bytes and heatmap ready for the next frames
-        app.settledFrames = finished ? app.settledFrames + 1 : 0;
+        const uint64_t posts = app.background->posted();
+        app.settledFrames = finished && posts == app.settledPosts ? app.settledFrames + 1 : 0;
+        app.settledPosts = posts;
         if (app.settledFrames >= 2 || timedOut) {
           takeScreenshot(app, window, options.screenshot);
           if (timedOut) {
