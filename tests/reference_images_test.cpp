@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/image.h"
+#include "grading/tolerance.h"
 #include "metrics/image_metrics.h"
 #include "metrics/pixel_ztest.h"
 #include "modules/registry.h"
@@ -47,12 +48,9 @@ Image renderEntry(const nlohmann::json& entry, const nlohmann::json& set, const 
 // Whether `error` meets every tolerance of `entry`; the values in `report`.
 bool withinTolerance(const ImageError& error, const nlohmann::json& entry, std::string& report) {
   bool ok = true;
-  for (const auto& tol : entry.at("tolerance")) {
-    const std::string metric = tol.at("metric").get<std::string>();
-    const double value = metricValue(error, metric);
-    const bool pass = tol.contains("max") ? value <= tol.at("max").get<double>() : value >= tol.at("min").get<double>();
-    report += metric + " " + std::to_string(value) + (pass ? " ok; " : " OUT; ");
-    ok = ok && pass;
+  for (const grading::ToleranceCheck& c : grading::checkTolerances(error, entry.at("tolerance"))) {
+    report += c.metric + " " + std::to_string(c.value) + (c.passed ? " ok; " : " OUT; ");
+    ok = ok && c.passed;
   }
   return ok;
 }

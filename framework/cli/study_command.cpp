@@ -18,8 +18,6 @@
 #include <fstream>
 #include <sstream>
 
-#include <unistd.h>
-
 #include "cli/commands.h"
 #include "cli/scene_setup.h"
 #include "core/base64.h"
@@ -146,13 +144,8 @@ std::string fileSafe(std::string s) {
   return s;
 }
 
-std::string pngDataUri(const Image& image) {
-  const fs::path tmp = fs::temp_directory_path() / ("lightlab_study_" + std::to_string(::getpid()) + ".png");
-  saveImage(image, tmp.string());
-  const std::string bytes = readTextFile(tmp.string());
-  fs::remove(tmp);
-  return "data:image/png;base64," + base64(bytes);
-}
+// A PNG file the study wrote, as a data URI for the self-contained page.
+std::string pngDataUri(const fs::path& png) { return "data:image/png;base64," + base64(readTextFile(png.string())); }
 
 }  // namespace
 
@@ -294,10 +287,12 @@ Command addStudyCommand(CLI::App& app, const GlobalOptions& global) {
                     r.error.ssim);
       html << row;
     }
-    html << "</table>\n<h2>Images</h2>\n<figure><img src='" << pngDataUri(reference)
+    const fs::path referencePng = fs::path(o->out) / "images" / "reference.png";
+    saveImage(reference, referencePng.string());
+    html << "</table>\n<h2>Images</h2>\n<figure><img src='" << pngDataUri(referencePng)
          << "'><figcaption>reference</figcaption></figure>\n";
     for (const Run& r : runs)
-      html << "<figure><img src='" << pngDataUri(loadImage((fs::path(o->out) / r.image).string())) << "'><figcaption>"
+      html << "<figure><img src='" << pngDataUri(fs::path(o->out) / r.image) << "'><figcaption>"
            << r.technique << " " << knob << "=" << r.value << "</figcaption></figure>\n";
     html << "</body></html>\n";
     const std::string htmlPath = (fs::path(o->out) / "study.html").string();

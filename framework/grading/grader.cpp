@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -13,6 +14,7 @@
 #include "core/image.h"
 #include "core/progress.h"
 #include "core/subprocess.h"
+#include "grading/tolerance.h"
 #include "metrics/image_metrics.h"
 #include "metrics/pixel_ztest.h"
 
@@ -32,7 +34,7 @@ std::string fmt(double v) {
 std::string firstLine(const std::string& path) {
   const std::string text = readTextFile(path);
   std::istringstream in(text);
-  std::string line, last;
+  std::string line;
   while (std::getline(in, line))
     if (line.find("error") != std::string::npos) return line;
   return text.substr(0, text.find('\n'));
@@ -295,16 +297,12 @@ class Grader {
         why = std::to_string(zt.rejected) + " pixel channels lie beyond the reference's noise (worst z " +
               fmt(zt.worstZ) + " at " + std::to_string(zt.worstX) + "," + std::to_string(zt.worstY) + ")";
     } else {
-    for (const auto& tol : e.at("tolerance")) {
-      const std::string metric = tol.at("metric").get<std::string>();
-      const double value = metricValue(error, metric);
-      const bool max = tol.contains("max");
-      const double bound = max ? tol.at("max").get<double>() : tol.at("min").get<double>();
-      const bool pass = max ? value <= bound : value >= bound;
-      details << metric << " " << fmt(value) << (max ? " (max " : " (min ") << fmt(bound) << ")"
-              << (pass ? "" : " OUT") << "\n";
-      if (!pass) why += (why.empty() ? "" : ", ") + metric + " " + fmt(value) + (max ? " > " : " < ") + fmt(bound);
-      ok = ok && pass;
+    for (const ToleranceCheck& c : checkTolerances(error, e.at("tolerance"))) {
+      details << c.metric << " " << fmt(c.value) << (c.isMax ? " (max " : " (min ") << fmt(c.bound) << ")"
+              << (c.passed ? "" : " OUT") << "\n";
+      if (!c.passed)
+        why += (why.empty() ? "" : ", ") + c.metric + " " + fmt(c.value) + (c.isMax ? " > " : " < ") + fmt(c.bound);
+      ok = ok && c.passed;
     }
     // Per pixel: |a - b| <= abs + rel |b| in every channel, except for an allowed fraction (edges).
     const nlohmann::json pixels = e.value("pixels", nlohmann::json::object());
@@ -364,12 +362,12 @@ class Grader {
     const auto start = std::chrono::steady_clock::now();
     const nlohmann::json set = {{"intersection", "framework"}, {"light_samples", "1"}};
     const auto best = [&](const std::string& scene, const std::string& tag, double timeout, Render& last) {
-      double seconds = kInfinityD;
+      double seconds = std::numeric_limits<double>::infinity();
       for (int k = 0; k < 3; ++k) {
         last = render(scenePath(scene), "raycast", s.accelerator, 128, 128, 4, set,
                       files_ + "/" + safeName(t.id + "_complexity_" + s.accelerator + "_" + tag), timeout);
         if (!last.run.succeeded()) return -1.0;
-        seconds = std::min(seconds, number(last.statsJson, "time_seconds", "render", kInfinityD));
+        seconds = std::min(seconds, number(last.statsJson, "time_seconds", "render", std::numeric_limits<double>::infinity()));
       }
       return seconds;
     };
@@ -428,7 +426,6 @@ class Grader {
     return r;
   }
 
-  static constexpr double kInfinityD = 1e300;
   static std::string oneLine(std::string s) {
     std::replace(s.begin(), s.end(), '\n', ' ');
     if (s.size() > 300) s = s.substr(0, 300) + "...";
