@@ -38,6 +38,7 @@ Image renderEntry(const nlohmann::json& entry, const nlohmann::json& set, const 
   settings.width = entry.at("size").at(0).get<int>();
   settings.height = entry.at("size").at(1).get<int>();
   settings.seed = seed;
+  settings.spp = entry.value("spp", 1);
   const auto technique = t.make();
   RenderJob job(scene, *accel, *technique, params, settings);
   job.run();

@@ -8,23 +8,6 @@
 
 namespace ll::a3 {
 
-Media Media::with(uint32_t material) const {
-  Media m = *this;
-  if (m.count < kMax) m.ids[static_cast<size_t>(m.count++)] = material;
-  return m;
-}
-
-Media Media::without(uint32_t material) const {
-  Media m = *this;
-  for (int i = m.count - 1; i >= 0; --i)
-    if (m.ids[static_cast<size_t>(i)] == material) {
-      for (int k = i; k + 1 < m.count; ++k) m.ids[static_cast<size_t>(k)] = m.ids[static_cast<size_t>(k + 1)];
-      --m.count;
-      break;
-    }
-  return m;
-}
-
 float fresnelSchlick(float cosI, float n1, float n2) {
   float c = std::clamp(cosI, 0.0f, 1.0f);
   if (n1 > n2) {  // use the cosine on the thinner side: the transmitted one
@@ -47,10 +30,6 @@ WhittedTracer::WhittedTracer(const Scene& scene, const Tracer& tracer, const Whi
       tree_(tree),
       transmissive_(scene.effects.has(Effect::Refraction)) {}
 
-float WhittedTracer::iorOf(const Media& media) const {
-  return media.count == 0 ? 1.0f : scene_.materials[media.ids[static_cast<size_t>(media.count - 1)]].ior;
-}
-
 std::optional<Surface> WhittedTracer::intersect(const Ray& ray, const PathState& path) const {
   Hit hit;
   const bool found = tracer_.intersect(ray, hit, path.kind);
@@ -69,23 +48,21 @@ std::optional<Surface> WhittedTracer::intersect(const Ray& ray, const PathState&
   const uint32_t id = materialIndex(&m);
   if (m.transmits()) {
     if (s.entering) {
-      s.n1 = iorOf(path.media);
+      s.n1 = path.media.ior(scene_);
       s.mediaBehind = path.media.with(id);
       s.n2 = m.ior;
     } else {
       s.n1 = m.ior;
       s.mediaBehind = path.media.without(id);
-      s.n2 = iorOf(s.mediaBehind);
+      s.n2 = s.mediaBehind.ior(scene_);
     }
   } else {
-    s.n1 = s.n2 = iorOf(path.media);
+    s.n1 = s.n2 = path.media.ior(scene_);
     s.mediaBehind = path.media;
   }
   // Beer-Lambert over the segment, in the medium the ray travelled through.
-  if (path.media.count > 0) {
-    const Rgb sigma = scene_.materials[path.media.ids[static_cast<size_t>(path.media.count - 1)]].absorption;
-    if (!isBlack(sigma)) s.absorption = glm::exp(-sigma * s.t);
-  }
+  const Rgb sigma = path.media.absorption(scene_);
+  if (!isBlack(sigma)) s.absorption = glm::exp(-sigma * s.t);
   s.path = path;
   s.path.throughput = path.throughput * s.absorption;
   if (node) {

@@ -11,22 +11,12 @@
 
 #include "a3_tasks.h"
 #include "core/rng.h"
+#include "render/media.h"
 #include "render/ray_tree.h"
 #include "render/tracer.h"
 #include "scene/scene.h"
 
 namespace ll::a3 {
-
-// The dielectrics a path is inside, innermost last (material indices).
-// Nested glass (a glass sphere in water) needs the whole stack: leaving the
-// glass puts the ray back into the water, not into air.
-struct Media {
-  static constexpr int kMax = 8;  // deeper nesting keeps the 8 outermost
-  std::array<uint32_t, kMax> ids{};
-  int count = 0;
-  Media with(uint32_t material) const;     // entered `material`
-  Media without(uint32_t material) const;  // left it (the innermost occurrence)
-};
 
 // The state of the path a ray belongs to.
 struct PathState {
@@ -100,7 +90,6 @@ class WhittedTracer {
   Rgb lightTerm(const Surface& s, Vec3 l, float distance, Rgb intensity, bool castShadow) const;
   int addNode(RayKind kind, const Ray& ray, const PathState& parentPath, int parentNode, Rgb throughput) const;
   uint32_t materialIndex(const Material* m) const { return static_cast<uint32_t>(m - scene_.materials.data()); }
-  float iorOf(const Media& media) const;
 
   const Scene& scene_;
   const Tracer& tracer_;

@@ -249,7 +249,8 @@ class Grader {
     const std::string stem = files_ + "/" + safeName(t.id + "_" + stemName);
     const nlohmann::json& e = s.entry;
     const Render out = render(scenePath(e.at("scene").get<std::string>()), s.technique, "none",
-                              e.at("size").at(0).get<int>(), e.at("size").at(1).get<int>(), 0, e.at("set"), stem,
+                              e.at("size").at(0).get<int>(), e.at("size").at(1).get<int>(), e.value("spp", 0),
+                              e.at("set"), stem,
                               o_.renderTimeout);
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (!out.run.succeeded()) {

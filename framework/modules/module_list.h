@@ -28,4 +28,5 @@
   X(whittedTechnique)          \
   X(radiosityTechnique)        \
   X(radiosityRasterTechnique)  \
+  X(pathTechnique)             \
   LIGHTLAB_GPU_TECHNIQUES(X)

@@ -1,0 +1,58 @@
+#include "light_sampler.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "render/ray_offset.h"
+
+namespace ll::a6 {
+
+LightSampler::LightSampler(const Scene& scene)
+    : scene_(scene), areaLightOfObject_(scene.objects.size(), -1),
+      count_(scene.lights.size() + scene.areaLights.size()) {
+  for (size_t i = 0; i < scene.areaLights.size(); ++i)
+    areaLightOfObject_[scene.areaLights[i].object] = static_cast<int>(i);
+}
+
+LightSample LightSampler::sample(float uChoice, Vec2 u) const {
+  const auto index = std::min(static_cast<size_t>(uChoice * static_cast<float>(count_)), count_ - 1);
+  const float choice = 1.0f / static_cast<float>(count_);
+  LightSample s;
+  if (index < scene_.lights.size()) {
+    const Light& light = scene_.lights[index];
+    s.kind = light.type == Light::Type::Point ? LightSample::Kind::Point : LightSample::Kind::Directional;
+    s.position = light.position;
+    s.direction = light.direction;
+    s.emission = light.intensity;
+    s.pdf = choice;
+    s.castShadow = light.canBeOccluded;
+    return s;
+  }
+  const AreaLight& light = scene_.areaLights[index - scene_.lights.size()];
+  const LightPoint p = scene_.sampleAreaLight(light, u);
+  s.kind = LightSample::Kind::Area;
+  s.position = p.position;
+  s.normal = p.normal;
+  s.emission = p.emission;
+  s.pdf = choice / light.area;
+  s.castShadow = light.canBeOccluded;
+  return s;
+}
+
+float LightSampler::pdfSolidAngle(uint32_t prim, float distance, float cosLight) const {
+  const int index = areaLightOfObject_[scene_.geometry.objectOf(prim)];
+  if (index < 0 || !(cosLight > 0.0f)) return 0.0f;
+  const float pdfArea = 1.0f / (static_cast<float>(count_) * scene_.areaLights[static_cast<size_t>(index)].area);
+  return pdfArea * distance * distance / cosLight;
+}
+
+bool visible(const Tracer& tracer, const ShadingPoint& x, const Vec3& wi, float distance) {
+  Ray ray;
+  ray.origin = offsetRayOrigin(x.position, faceTowards(x.ng, wi));
+  ray.dir = wi;
+  ray.tmin = 0.0f;
+  ray.tmax = std::isinf(distance) ? kInfinity : distance * (1.0f - 1e-4f);
+  return !tracer.occluded(ray);
+}
+
+}  // namespace ll::a6

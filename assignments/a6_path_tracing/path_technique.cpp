@@ -1,0 +1,145 @@
+// Technique `path` -- unidirectional Monte Carlo path tracing, the
+// rendering equation's estimate and LightLab's ground truth:
+//
+//   lightlab render SCENE -t path --spp 256 [--set max_depth=16] [--set rr_depth=3]
+//                   [--set strategy=mis|light|bsdf]
+//
+// At every vertex: the emission the path found (weighted by MIS against
+// light sampling), one light sample by next-event estimation (A6.2), then a
+// direction from the BSDF (cosine-weighted for the diffuse lobe, A6.1), and
+// after rr_depth bounces Russian roulette (A6.3). Strategies: `mis` combines
+// light and BSDF sampling by the power heuristic; `light` takes direct light
+// only from light samples, `bsdf` only from paths that hit an emitter (point
+// and directional lights then contribute nothing: a random direction never
+// hits a point). Ambient light (ka Ia) is a local-model device and is not
+// used. Framework code: students write the functions in a6_tasks.h.
+#include <memory>
+#include <optional>
+
+#include "a6_tasks.h"
+#include "bsdf.h"
+#include "light_sampler.h"
+#include "render/media.h"
+#include "render/ray_offset.h"
+#include "render/technique.h"
+#include "scene/camera.h"
+
+namespace ll {
+
+namespace {
+
+enum class Strategy { Mis, Light, Bsdf };
+
+class PathTracing final : public PixelTechnique {
+ public:
+  void prepare(const RenderContext& ctx) override {
+    camera_ = renderCamera(ctx.scene, ctx.settings);
+    frame_.emplace(camera_);
+    lights_.emplace(ctx.scene);
+    maxDepth_ = ctx.params.getInt("max_depth");
+    rrDepth_ = ctx.params.getInt("rr_depth");
+    const std::string strategy = ctx.params.getChoice("strategy");
+    strategy_ = strategy == "light" ? Strategy::Light : strategy == "bsdf" ? Strategy::Bsdf : Strategy::Mis;
+  }
+
+ protected:
+  Rgb renderSample(const RenderContext& ctx, const PixelSample& s, const Tracer& tracer) const override {
+    const Scene& scene = ctx.scene;
+    Rng& rng = *s.rng;
+    Ray ray = referenceCameraRay(camera_, *frame_, s.position.x, s.position.y);
+    ray.dir = glm::normalize(ray.dir);
+    RayKind kind = RayKind::Camera;
+    Rgb radiance(0.0f), throughput(1.0f);
+    Media media;
+    bool deltaBounce = true;  // the last direction had no density (camera ray, mirror, glass): no MIS
+    float bsdfPdf = 0.0f;     // the density of the last smooth bounce, for MIS at an emitter it hits
+    for (int bounce = 0;; ++bounce) {
+      Hit hit;
+      if (!tracer.intersect(ray, hit, kind)) {
+        radiance += throughput * scene.background;
+        break;
+      }
+      const Rgb sigma = media.absorption(scene);  // Beer-Lambert along the segment just travelled
+      if (!isBlack(sigma)) throughput *= glm::exp(-sigma * hit.t);
+      const SurfacePoint sp = scene.surfacePoint(ray, hit);
+      const Material& m = *sp.material;
+      a6::ShadingPoint x;
+      x.position = sp.position;
+      x.wo = -ray.dir;
+      const bool front = glm::dot(sp.geometricNormal, x.wo) > 0.0f;
+      x.ng = faceTowards(sp.geometricNormal, x.wo);
+      x.n = faceTowards(sp.shadingNormal, x.wo);
+
+      if (front && m.emits()) {  // emitters emit on their front side
+        float weight = 1.0f;
+        if (!deltaBounce) {
+          if (strategy_ == Strategy::Light) weight = 0.0f;  // light sampling already counted it
+          if (strategy_ == Strategy::Mis)
+            weight = a6::powerHeuristic(bsdfPdf, lights_->pdfSolidAngle(hit.prim, hit.t, glm::dot(x.ng, x.wo)));
+        }
+        radiance += throughput * m.emission * weight;
+      }
+      if (bounce >= maxDepth_) break;
+
+      // The media on both sides, for a dielectric.
+      const auto id = static_cast<uint32_t>(&m - scene.materials.data());
+      const Media behind = !m.transmits() ? media : front ? media.with(id) : media.without(id);
+      const float n1 = media.ior(scene), n2 = m.transmits() ? (front ? m.ior : behind.ior(scene)) : n1;
+      const a6::Bsdf bsdf(m, m.diffuse(sp.uv), x, n1, n2);
+
+      if (bsdf.hasSmoothLobes() && strategy_ != Strategy::Bsdf && !lights_->empty()) {
+        const a6::LightSample light = lights_->sample(rng.uniform(), rng.uniform2());
+        radiance += throughput * a6::nextEventEstimate(x, light, bsdf, tracer, strategy_ == Strategy::Mis);
+      }
+      const float uLobe = rng.uniform();
+      const Vec2 u = rng.uniform2();
+      const std::optional<a6::BsdfSample> next = bsdf.sample(x.wo, u, uLobe);
+      if (!next) break;
+      // With light sampling only, a last smooth bounce could add nothing: no ray for it.
+      if (!next->delta && strategy_ == Strategy::Light && bounce + 1 >= maxDepth_) break;
+      throughput *= next->weight;
+      deltaBounce = next->delta;
+      bsdfPdf = next->pdf;
+      if (next->transmitted) media = behind;
+      if (bounce + 1 >= rrDepth_ && !a6::russianRoulette(throughput, rng.uniform())) break;
+      if (isBlack(throughput)) break;
+      ray = Ray{};
+      ray.origin = offsetRayOrigin(x.position, faceTowards(x.ng, next->wi));
+      ray.dir = next->wi;
+      kind = !next->delta ? RayKind::Indirect : next->transmitted ? RayKind::Refraction : RayKind::Reflection;
+    }
+    return radiance;
+  }
+
+ private:
+  Camera camera_;
+  std::optional<CameraFrame> frame_;
+  std::optional<a6::LightSampler> lights_;
+  int maxDepth_ = 16, rrDepth_ = 3;
+  Strategy strategy_ = Strategy::Mis;
+};
+
+}  // namespace
+
+TechniqueInfo pathTechnique() {
+  return {
+      "path",
+      "Monte Carlo path tracing of the rendering equation: next-event estimation and BSDF sampling combined by "
+      "MIS, Russian roulette, every material and light; the ground truth the other techniques are measured against",
+      EffectSet{Effect::DirectLighting, Effect::HardShadows, Effect::SoftShadows, Effect::MirrorReflection,
+                Effect::Refraction, Effect::GlossyHighlights, Effect::DiffuseInterreflection, Effect::Textures,
+                Effect::Emission},
+      10,
+      {
+          ParamDecl::integer("max_depth", 16, 0, 256,
+                             "most bounces of a path (0 = what the camera sees emitted, 1 = direct light only)"),
+          ParamDecl::integer("rr_depth", 3, 0, 256, "bounces before Russian roulette may end a path"),
+          ParamDecl::choice("strategy", "mis", {"mis", "light", "bsdf"},
+                            "direct light from: mis = light and BSDF sampling combined; light = light samples only; "
+                            "bsdf = only paths that hit an emitter"),
+      },
+      []() -> std::unique_ptr<Technique> { return std::make_unique<PathTracing>(); },
+  };
+}
+
+}  // namespace ll

@@ -1,0 +1,47 @@
+// A whole render in one call, for tests: scene, technique and accelerator by
+// name, parameter assignments, settings. (tests/ is on the tests' include path.)
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/image.h"
+#include "modules/registry.h"
+#include "render/render_job.h"
+#include "render/render_stats.h"
+#include "scene/scene.h"
+
+namespace ll::testing_support {
+
+struct RenderResult {
+  Image image;        // resolved without stub stripes
+  RenderStats stats;
+  bool anyStub = false;  // some sample went through a student stub
+};
+
+inline RenderResult renderWith(const Scene& scene, const std::string& technique, const std::string& accelerator,
+                               const std::vector<std::pair<std::string, std::string>>& sets,
+                               const RenderSettings& settings) {
+  const AcceleratorInfo& a = findAccelerator(accelerator);
+  const auto accel = buildAccelerator(a, ParamSet(a.name, a.params), scene.geometry);
+  const TechniqueInfo& info = findTechnique(technique);
+  ParamSet params(info.name, info.params);
+  for (const auto& [k, v] : sets) params.set(k, v);
+  const auto t = info.make();
+  RenderJob job(scene, *accel, *t, params, settings);
+  job.run();
+  return {job.frame().resolve(false), job.stats(), job.frame().anyStub()};
+}
+
+// Settings for a w x h render with `spp` samples and seed `seed`.
+inline RenderSettings renderSettings(int width, int height, int spp = 1, uint64_t seed = 0) {
+  RenderSettings s;
+  s.width = width;
+  s.height = height;
+  s.spp = spp;
+  s.seed = seed;
+  return s;
+}
+
+}  // namespace ll::testing_support
