@@ -3,7 +3,7 @@
 // technique parameters, size) with named tolerances; each render must meet
 // them, and every listed known mistake must miss them -- the tolerances
 // pass a correct solution and catch a wrong one.
-// LIGHTLAB_UPDATE_REFERENCES=1 rewrites the reference images instead.
+// LIGHTLAB_UPDATE_REFERENCES=1 rewrites the reference images instead (=a6: only data/references/a6).
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -17,6 +17,7 @@
 #include "metrics/image_metrics.h"
 #include "metrics/pixel_ztest.h"
 #include "modules/registry.h"
+#include "metrics/pixel_statistics.h"
 #include "render/render_job.h"
 #include "scene/json_document.h"
 #include "scene/scene_loader.h"
@@ -68,26 +69,14 @@ void checkStatistical(const std::string& dir, const nlohmann::json& entry, const
     const int n = entry.at("renders").get<int>();
     std::vector<Image> renders;
     for (int k = 0; k < n; ++k) renders.push_back(renderEntry(entry, entry.at("set"), technique, 1000u + static_cast<unsigned>(k)));
-    Image mean(renders[0].width(), renders[0].height()), variance = mean;
-    for (size_t i = 0; i < mean.pixelCount(); ++i) {
-      glm::dvec3 sum(0.0), sum2(0.0);
-      for (const Image& r : renders) {
-        const glm::dvec3 v(r.pixels()[i]);
-        sum += v;
-        sum2 += v * v;
-      }
-      const glm::dvec3 m = sum / static_cast<double>(n);
-      const glm::dvec3 var = glm::max(glm::dvec3(0.0), (sum2 - static_cast<double>(n) * m * m) / static_cast<double>(n - 1));
-      mean.pixels()[i] = Rgb(m);
-      variance.pixels()[i] = Rgb(var * (1.0 + 1.0 / static_cast<double>(n)));
-    }
-    saveImage(mean, meanPath);
-    saveImage(variance, variancePath);
+    PixelStatistics stats = pixelStatistics(renders);
+    for (Rgb& v : stats.variance.pixels()) v *= 1.0f + 1.0f / static_cast<float>(n);  // the mean's own noise
+    saveImage(stats.mean, meanPath);
+    saveImage(stats.variance, variancePath);
     return;
   }
   const Image mean = loadImage(meanPath), variance = loadImage(variancePath);
-  ZTestSettings z;
-  z.alpha = entry.at("ztest").value("alpha", 0.01);
+  const ZTestSettings z = grading::zTestSettings(entry);
   for (const unsigned seed : {1u, 2u, 3u}) {
     const ZTestResult r = pixelZTest(renderEntry(entry, entry.at("set"), technique, seed), mean, variance, z);
     EXPECT_TRUE(r.passed) << "seed " << seed << ": " << r.rejected << " pixels rejected, worst p " << r.minPValue
@@ -110,7 +99,10 @@ void checkStatistical(const std::string& dir, const nlohmann::json& entry, const
 void checkManifest(const std::string& dir) {
   const JsonDocument doc = JsonDocument::load(dir + "references.json");
   const std::string technique = doc.root().at("technique").get<std::string>();
-  const bool update = std::getenv("LIGHTLAB_UPDATE_REFERENCES") != nullptr;
+  // LIGHTLAB_UPDATE_REFERENCES=1 rewrites every folder's images, =a6 (a folder's name) only that folder's.
+  const char* updateWhat = std::getenv("LIGHTLAB_UPDATE_REFERENCES");
+  const std::string folder = std::filesystem::path(dir).parent_path().filename().string();
+  const bool update = updateWhat != nullptr && (std::string(updateWhat) == "1" || folder == updateWhat);
   for (const auto& entry : doc.root().at("references")) {
     const std::string path = dir + entry.at("image").get<std::string>();
     SCOPED_TRACE(path);

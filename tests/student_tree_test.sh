@@ -72,8 +72,16 @@ for pair in "form_factors=analytic:A5.1" "solver=gauss-seidel:A5.2" "solver=sout
     --set hemicube_res=8 --set "$set_arg" >/dev/null 2>"$work/stderr_a5.txt"
   grep -q "$task not implemented" "$work/stderr_a5.txt" || { echo "FAIL: $task is not reported as missing"; exit 1; }
 done
+# A6: the path tracer runs with every stub (uniform hemisphere sampling, no roulette; NEE adds nothing)
+# and names each task.
+"$build/lightlab" --quiet render "$work/tree/data/scenes/cornell_box.json" -t path --width 32 --height 32 \
+  --spp 2 --set max_depth=3 -o "$work/a6.png" 2>"$work/stderr_a6.txt"
+for task in A6.1 A6.2 A6.3; do
+  grep -q "$task not implemented" "$work/stderr_a6.txt" || { echo "FAIL: $task is not reported as missing"; exit 1; }
+done
+[ -s "$work/a6.png" ] || { echo "FAIL: no A6 image written"; exit 1; }
 # Grading the untouched student tree: every task "not implemented", 0 points, a normal exit.
-for a in A1 A2 A3 A4 A5; do
+for a in A1 A2 A3 A4 A5 A6; do
   "$build/lightlab" --quiet grade "$a" --format text,gradescope --report "$work/grade/$a" > "$work/grade_$a.txt" \
     2>&1 || { cat "$work/grade_$a.txt"; echo "FAIL: grading $a in the student tree exited with $?"; exit 1; }
   python3 - "$work/grade/$a/results.json" "$a" "$work/grade_$a.txt" <<'PY' || { cat "$work/grade_$a.txt"; exit 1; }
@@ -118,4 +126,4 @@ if command -v xvfb-run >/dev/null; then
   done
   grep -q '"phase": "done"' "$work/gui.json" || { echo "FAIL: the GUI panes did not finish"; exit 1; }
 fi
-echo "student tree: grades to 0 with every task not implemented; builds, runs, reports A1.1-A1.5, A2.1-A2.5, A3.4, A4.1-A4.4 and A5.1-A5.3 as not implemented (CLI and GUI)"
+echo "student tree: grades to 0 with every task not implemented; builds, runs, reports A1.1-A1.5, A2.1-A2.5, A3.4, A4.1-A4.4, A5.1-A5.3 and A6.1-A6.3 as not implemented (CLI and GUI)"

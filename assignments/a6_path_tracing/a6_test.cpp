@@ -15,6 +15,7 @@
 
 #include "a6_tasks.h"
 #include "accel/accelerator.h"
+#include "metrics/pixel_statistics.h"
 #include "metrics/pixel_ztest.h"
 #include "modules/registry.h"
 #include "render_support.h"
@@ -339,7 +340,8 @@ TEST_P(A6_Furnace, ConvergesToOneOverOneMinusAlbedo) {
   const Scene scene = furnace(albedo);
   const auto r = renderWith(scene, "path", "bvh", {{"strategy", strategy}, {"max_depth", "256"}},
                             renderSettings(32, 32, 64, 7));
-  ASSERT_TRUE(r.stats.missingTasks.empty());
+  // (Other tasks' stubs may run: A6.1's and A6.3's stand-ins are correct, so
+  // grading uses the `bsdf` cases for them before A6.2 is written.)
   EXPECT_EQ(r.stats.work.nonFinite, 0u);
   const double expected = 1.0 / (1.0 - static_cast<double>(albedo));
   const ImageMean m = meanOf(r.image);
@@ -354,34 +356,22 @@ TEST_P(A6_Furnace, ConvergesToOneOverOneMinusAlbedo) {
 // is singular there), so its sample mean falls short in any finite run -- the
 // reason MIS exists.
 INSTANTIATE_TEST_SUITE_P(A6, A6_Furnace,
-                         testing::Combine(testing::Values(0.5f, 0.8f, 0.95f), testing::Values("mis", "bsdf")));
+                         testing::Combine(testing::Values(0.5f, 0.8f, 0.95f), testing::Values("mis", "bsdf")),
+                         [](const testing::TestParamInfo<A6_Furnace::ParamType>& p) {
+                           const int percent = static_cast<int>(std::lround(std::get<0>(p.param) * 100.0f));
+                           return "albedo" + std::to_string(percent) + "_" + std::get<1>(p.param);
+                         });
 
 // Per-pixel mean and variance of one render, from renders with seeds first, first + 1, ...
-struct MeanVariance {
-  Image mean, variance;
-};
-MeanVariance statistics(const Scene& scene, const std::string& technique,
-                        const std::vector<std::pair<std::string, std::string>>& sets, int size, int spp, int renders,
-                        uint64_t firstSeed) {
+PixelStatistics statistics(const Scene& scene, const std::string& technique,
+                           const std::vector<std::pair<std::string, std::string>>& sets, int size, int spp,
+                           int renders, uint64_t firstSeed) {
   std::vector<Image> images;
   for (int k = 0; k < renders; ++k)
     images.push_back(
         renderWith(scene, technique, "bvh", sets, renderSettings(size, size, spp, firstSeed + static_cast<uint64_t>(k)))
             .image);
-  MeanVariance mv{Image(size, size), Image(size, size)};
-  for (size_t i = 0; i < mv.mean.pixels().size(); ++i) {
-    glm::dvec3 sum(0.0), sum2(0.0);
-    for (const Image& im : images) {
-      const glm::dvec3 v(im.pixels()[i]);
-      sum += v;
-      sum2 += v * v;
-    }
-    const glm::dvec3 mean = sum / static_cast<double>(renders);
-    const glm::dvec3 var = (sum2 - static_cast<double>(renders) * mean * mean) / (renders - 1.0);
-    mv.mean.pixels()[i] = Rgb(mean);
-    mv.variance.pixels()[i] = Rgb(glm::max(var, glm::dvec3(0.0)));
-  }
-  return mv;
+  return pixelStatistics(images);
 }
 
 TEST(A6_PathScene, DirectLightOnlyAgreesWithRayCasting) {
@@ -395,9 +385,9 @@ TEST(A6_PathScene, DirectLightOnlyAgreesWithRayCasting) {
   Scene scene = loadScene(std::string(LIGHTLAB_DATA_DIR) + "/scenes/cornell_box.json");
   scene.ambient = Rgb(0.0f);
   constexpr int kSize = 24, kRenders = 8;
-  const MeanVariance ray = statistics(scene, "raycast", {{"intersection", "framework"}}, kSize, 4, kRenders, 100);
+  const PixelStatistics ray = statistics(scene, "raycast", {{"intersection", "framework"}}, kSize, 4, kRenders, 100);
   for (const char* strategy : {"mis", "light"}) {
-    const MeanVariance path =
+    const PixelStatistics path =
         statistics(scene, "path", {{"max_depth", "1"}, {"strategy", strategy}}, kSize, 16, kRenders, 200);
     // The difference of the two means has the variance of both means.
     Image variance(kSize, kSize);

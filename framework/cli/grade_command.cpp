@@ -1,6 +1,6 @@
 // lightlab grade ASSIGNMENT [--report DIR] [--format text,html,junit,gradescope]
 //                [--seed N] [--task ID] [--task-tests PATH] [--min-score P]
-// Grades the assignment (A1..A5, a folder name, or a grading.json) with the
+// Grades the assignment (A1..A6, a folder name, or a grading.json) with the
 // code this program was built from: the task tests, the reference images and
 // the complexity probes of assignments/<dir>/grading.json. Prints the score
 // table and writes the reports into DIR (default out/grade/<assignment>):
@@ -35,7 +35,7 @@ struct GradeOptions {
 Command addGradeCommand(CLI::App& app, const GlobalOptions& global) {
   auto o = std::make_shared<GradeOptions>();
   CLI::App* cmd = app.add_subcommand("grade", "Grade an assignment: task tests, reference images, complexity probes");
-  cmd->add_option("assignment", o->assignment, "A1..A5, an assignment folder name, or a grading.json")->required();
+  cmd->add_option("assignment", o->assignment, "A1..A6, an assignment folder name, or a grading.json")->required();
   cmd->add_option("--report", o->report, "Folder for report.html, junit.xml, results.json (default out/grade/<A>)");
   cmd->add_option("--format", o->formats, "Reports to write: text (stdout), html, junit, gradescope")
       ->delimiter(',')

@@ -11,8 +11,11 @@
 // accelerator's name). The reference is an image file, or rendered once
 // (DIR/reference.pfm) by the reference technique (default: the first one) at
 // --reference-spp samples (default: 256 if the knob is spp, else --spp) with
-// the --reference-set changes (for example light_samples=1024).
+// the --reference-set changes (for example light_samples=1024), and kept in
+// --cache (default ~/.cache/lightlab/references) for the next run.
 #include <cctype>
+#include <cstdint>
+#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -29,6 +32,7 @@
 #include "metrics/image_metrics.h"
 #include "modules/registry.h"
 #include "render/render_job.h"
+#include "render/technique.h"
 
 namespace ll::cli {
 
@@ -42,6 +46,8 @@ struct StudyOptions {
   std::string accelerator = "bvh";
   int width = 160, height = 0, spp = 1, referenceSpp = 0;  // 0: 256 when the knob is spp, else --spp
   unsigned seed = 1;
+  std::string cache;      // folder of rendered references; "" = none
+  bool widthGiven = false;  // --width on the command line wins over a built-in study's
 };
 
 // The built-in studies: one command each (lightlab study NAME --out DIR).
@@ -78,6 +84,13 @@ const std::vector<BuiltinStudy>& builtinStudies() {
        {"samples=16"}, "", 128, 1, 4},
       {"accel", "accelerators: build + trace time (all exact, so the error is 0)", "cornell_bunny.json",
        "accel=none,bvh,kdtree,octree", {"raycast"}, {"intersection=framework", "light_samples=4"}, {}, "", 96, 1, 1},
+      {"path-spp", "path tracing: samples per pixel (the error falls as 1/spp)", "cornell_box.json",
+       "spp=1,4,16,64,256", {"path"}, {}, {}, "", 64, 1, 4096},
+      {"ground-truth",
+       "ray casting, Whitted and radiosity against path-traced ground truth: what each misses, what it saves",
+       "cornell_box.json", "spp=1,4,16,64", {"raycast", "whitted", "radiosity", "path"},
+       {"intersection=framework", "patch_size=0.08", "hemicube_res=16"},
+       {}, "path", 64, 1, 4096},
   };
   return studies;
 }
@@ -147,6 +160,43 @@ std::string fileSafe(std::string s) {
 // A PNG file the study wrote, as a data URI for the self-contained page.
 std::string pngDataUri(const fs::path& png) { return "data:image/png;base64," + base64(readTextFile(png.string())); }
 
+// Where references are cached by default: $XDG_CACHE_HOME/lightlab/references,
+// else ~/.cache/lightlab/references ("" without either).
+std::string defaultReferenceCache() {
+  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg)
+    return (fs::path(xdg) / "lightlab" / "references").string();
+  if (const char* home = std::getenv("HOME"); home && *home)
+    return (fs::path(home) / ".cache" / "lightlab" / "references").string();
+  return "";
+}
+
+// 64-bit FNV-1a.
+uint64_t fnv1a(const std::string& text, uint64_t h = 14695981039346656037ull) {
+  for (const unsigned char c : text) h = (h ^ c) * 1099511628211ull;
+  return h;
+}
+
+// The cache file of a rendered reference: named by a hash of everything the
+// image depends on -- the scene file's bytes, the technique, every parameter
+// change, size, seed -- and of this build of lightlab (its size and time), so
+// a rebuilt renderer never reuses a stale ground truth.
+std::string cachedReferencePath(const StudyOptions& o, const std::string& technique,
+                                const std::vector<std::string>& changes) {
+  std::string key = readTextFile(o.scene) + "\n" + technique + "\n";
+  for (const std::string& c : o.sets) key += "set " + c + "\n";
+  for (const std::string& c : changes) key += "change " + c + "\n";
+  key += std::to_string(o.width) + "x" + std::to_string(o.height) + " seed " + std::to_string(o.seed) + "\n";
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    key += std::to_string(fs::file_size(exe, ec)) + " ";
+    key += std::to_string(fs::last_write_time(exe, ec).time_since_epoch().count());
+  }
+  char name[64];
+  std::snprintf(name, sizeof(name), "%016llx.pfm", static_cast<unsigned long long>(fnv1a(key)));
+  return (fs::path(o.cache) / name).string();
+}
+
 }  // namespace
 
 Command addStudyCommand(CLI::App& app, const GlobalOptions& global) {
@@ -161,7 +211,8 @@ Command addStudyCommand(CLI::App& app, const GlobalOptions& global) {
       ->capture_default_str();
   cmd->add_option("-a,--accel", o->accelerator, "Accelerator")->capture_default_str();
   cmd->add_option("--set", o->sets, "Parameter of every render, name=value (repeatable)");
-  cmd->add_option("--width", o->width, "Image width in pixels")->capture_default_str()->check(CLI::Range(1, 8192));
+  CLI::Option* width =
+      cmd->add_option("--width", o->width, "Image width in pixels")->capture_default_str()->check(CLI::Range(1, 8192));
   cmd->add_option("--height", o->height, "Image height (default: the camera's aspect)")->check(CLI::Range(0, 8192));
   cmd->add_option("--spp", o->spp, "Samples per pixel (unless the knob is spp)")->capture_default_str()->check(CLI::Range(1, 1 << 20));
   cmd->add_option("--seed", o->seed, "Seed of the random streams")->capture_default_str();
@@ -172,7 +223,12 @@ Command addStudyCommand(CLI::App& app, const GlobalOptions& global) {
       ->check(CLI::Range(1, 1 << 20));
   cmd->add_option("--reference-set", o->referenceSets, "Parameter change of the rendered reference, name=value");
   cmd->add_option("--out", o->out, "Output folder: study.csv, study.html, images")->required();
-  return [o, &global]() {
+  o->cache = defaultReferenceCache();
+  cmd->add_option("--cache", o->cache,
+                  "Folder where rendered references are kept and reused (\"\" = none; default: " + o->cache + ")");
+  return [o, width, &global]() {
+    o->widthGiven = width->count() > 0;
+    setPrecomputationCache(false);  // each render's time includes its own precomputation (radiosity's solve)
     for (const BuiltinStudy& b : builtinStudies()) {
       if (o->scene != b.name) continue;
       o->scene = std::string(LIGHTLAB_SOURCE_DIR) + "/data/scenes/" + b.scene;
@@ -181,7 +237,7 @@ Command addStudyCommand(CLI::App& app, const GlobalOptions& global) {
       o->sets.insert(o->sets.begin(), b.sets.begin(), b.sets.end());
       if (o->referenceSets.empty()) o->referenceSets = b.referenceSets;
       if (o->referenceTechnique.empty()) o->referenceTechnique = b.referenceTechnique;
-      o->width = b.width;
+      if (!o->widthGiven) o->width = b.width;
       o->spp = b.spp;
       if (o->referenceSpp == 0) o->referenceSpp = b.referenceSpp;
     }
@@ -221,8 +277,20 @@ Command addStudyCommand(CLI::App& app, const GlobalOptions& global) {
       const int spp = o->referenceSpp > 0 ? o->referenceSpp : knob == "spp" ? 256 : o->spp;
       changes.push_back("spp=" + std::to_string(spp));
       const std::string technique = o->referenceTechnique.empty() ? o->techniques.front() : o->referenceTechnique;
-      reference = render(*o, technique, changes, nullptr);
-      if (!global.quiet) std::fprintf(stderr, "study: reference rendered (%s, %d spp)\n", technique.c_str(), spp);
+      const std::string cached = o->cache.empty() ? "" : cachedReferencePath(*o, technique, changes);
+      std::error_code exists;
+      if (!cached.empty() && fs::exists(cached, exists)) {
+        reference = loadImage(cached);
+        if (!global.quiet) std::fprintf(stderr, "study: reference from the cache %s\n", cached.c_str());
+      } else {
+        reference = render(*o, technique, changes, nullptr);
+        if (!global.quiet) std::fprintf(stderr, "study: reference rendered (%s, %d spp)\n", technique.c_str(), spp);
+        if (!cached.empty()) {
+          std::error_code ignored;  // a cache that cannot be written only costs time next run
+          fs::create_directories(fs::path(cached).parent_path(), ignored);
+          if (!ignored) saveImage(reference, cached);
+        }
+      }
       saveImage(reference, (fs::path(o->out) / "reference.pfm").string());
     }
 

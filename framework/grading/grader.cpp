@@ -286,8 +286,7 @@ class Grader {
       r.kind = "statistical";
       const std::string dir = fs::path(o_.dataDir + "/references/" + s.reference).parent_path().string();
       const Image variance = loadImage(dir + "/" + e.at("variance").get<std::string>());
-      ZTestSettings z;
-      z.alpha = e.value("ztest", nlohmann::json::object()).value("alpha", 0.01);
+      const ZTestSettings z = grading::zTestSettings(e);
       const ZTestResult zt = pixelZTest(student, reference, variance, z);
       ok = zt.passed;
       details << "Z-test of " << zt.tests << " pixel channels against the mean of " << e.value("renders", 0)

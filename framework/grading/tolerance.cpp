@@ -16,4 +16,14 @@ std::vector<ToleranceCheck> checkTolerances(const ImageError& error, const nlohm
   return out;
 }
 
+ZTestSettings zTestSettings(const nlohmann::json& entry) {
+  ZTestSettings z;
+  const nlohmann::json block = entry.value("ztest", nlohmann::json::object());
+  z.alpha = block.value("alpha", z.alpha);
+  z.absFloor = block.value("abs_floor", z.absFloor);
+  z.relFloor = block.value("rel_floor", z.relFloor);
+  z.maxRejected = block.value("max_rejected", z.maxRejected);
+  return z;
+}
+
 }  // namespace ll::grading

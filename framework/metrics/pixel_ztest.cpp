@@ -37,7 +37,7 @@ ZTestResult pixelZTest(const Image& test, const Image& mean, const Image& varian
           r.worstZ = z;
         }
       }
-  r.passed = r.rejected == 0;
+  r.passed = r.rejected <= s.maxRejected && r.nonFinite == 0;
   return r;
 }
 

@@ -67,5 +67,22 @@ TEST(PixelZTest, SidakCorrectionAndNonFinitePixels) {
   EXPECT_THROW(pixelZTest(Image(2, 2), mean, variance), UserError);
 }
 
+TEST(PixelZTest, MaxRejectedToleratesAFewOutliersButNotABiasOrANaN) {
+  const Image mean(32, 32, Rgb(0.5f)), variance(32, 32, Rgb(0.01f));
+  ZTestSettings lenient;
+  lenient.maxRejected = 6;
+  Image outliers = noisy(mean, 0.1f, 3);
+  outliers.at(5, 5) = Rgb(2.0f);  // one pixel 15 sigma off in every channel: 3 rejections
+  EXPECT_FALSE(pixelZTest(outliers, mean, variance).passed);
+  EXPECT_TRUE(pixelZTest(outliers, mean, variance, lenient).passed);
+  Image biased = noisy(mean, 0.1f, 3, 0.6f);  // 6 sigma everywhere
+  const ZTestResult b = pixelZTest(biased, mean, variance, lenient);
+  EXPECT_FALSE(b.passed);
+  EXPECT_GT(b.rejected, 100u);
+  Image nan = noisy(mean, 0.1f, 3);
+  nan.at(1, 2).g = std::nanf("");
+  EXPECT_FALSE(pixelZTest(nan, mean, variance, lenient).passed);
+}
+
 }  // namespace
 }  // namespace ll

@@ -1,5 +1,6 @@
 #include "render/technique.h"
 
+#include <atomic>
 #include <cmath>
 #include <mutex>
 
@@ -9,6 +10,13 @@
 #include "render/student_task.h"
 
 namespace ll {
+
+namespace {
+std::atomic<bool> precomputationCache{true};
+}  // namespace
+
+bool precomputationCacheEnabled() { return precomputationCache.load(); }
+void setPrecomputationCache(bool enabled) { precomputationCache = enabled; }
 
 Vec2 stratifiedOffset(int index, int count, Rng& rng) {
   if (count <= 1) return Vec2(0.5f);

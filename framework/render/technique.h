@@ -106,6 +106,12 @@ class PixelTechnique : public Technique {
 // average is unbiased for any count).
 Vec2 stratifiedOffset(int index, int count, Rng& rng);
 
+// Whether techniques may keep precomputed results (radiosity's solve) across
+// renders of the same scene and settings, as the GUI wants; `lightlab study`
+// turns it off so that every render pays for its own precomputation.
+bool precomputationCacheEnabled();
+void setPrecomputationCache(bool enabled);
+
 struct TechniqueInfo {
   std::string name;
   std::string help;
