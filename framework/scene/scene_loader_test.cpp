@@ -247,6 +247,9 @@ TEST(SceneLoader, BadFileHints) {
   // The mesh path is the absolute one that was tried.
   const std::string mesh = errorOf([&] { loadScene(bad + "missing_mesh.json"); });
   EXPECT_TRUE(contains(mesh, "mesh file not found: " + bad + "does_not_exist.ply")) << mesh;
+  // An OBJ face naming a vertex the file does not have (found by the OBJ fuzzer: it read past the vertices).
+  EXPECT_EQ(errorOf([&] { loadScene(bad + "obj_bad_index.obj"); }),
+            bad + "obj_bad_index.obj: face 1 uses vertex 4, but the file has 3");
 }
 
 TEST(SceneLoader, EveryBadFileIsCovered) {
@@ -256,7 +259,7 @@ TEST(SceneLoader, EveryBadFileIsCovered) {
     EXPECT_THROW(loadScene(entry.path().string()), UserError) << entry.path();
     ++n;
   }
-  EXPECT_EQ(n, 6);
+  EXPECT_EQ(n, 7);
 }
 
 // --- In-memory scenes: errors ------------------------------------------------------
