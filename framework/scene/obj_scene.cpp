@@ -150,6 +150,9 @@ Scene loadObjScene(const std::string& path) {
   // A camera framing the bounds from +z, and a light at the eye if nothing emits.
   const Bounds3 b = g.sceneBounds();
   const float radius = std::max(0.5f * b.diagonal(), 1e-3f);
+  // Beyond this the framing camera's distance and the light's squared distance overflow a float.
+  if (!(radius <= 1e18f))
+    throwUserError(path + ": the model is too large to frame (its bounds span more than 1e18 units)");
   scene.camera.fovYDeg = 45.0f;
   scene.camera.target = b.center();
   scene.camera.eye = b.center() + Vec3(0.0f, 0.25f * radius, 2.6f * radius);

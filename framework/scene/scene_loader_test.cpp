@@ -393,6 +393,12 @@ TEST(SceneLoader, BinaryMeshWithNaNCoordinateIsRejected) {
   EXPECT_TRUE(contains(msg, path + ": vertex 1 has a non-finite coordinate")) << msg;
 }
 
+TEST(SceneLoader, ObjTooLargeToFrameIsAnError) {
+  // Coordinates so large the framing camera overflowed to inf (found by the OBJ fuzzer).
+  const std::string huge = writeFile("huge.obj", "v -1 -1 -1\nv 1 -1 -1\nv -1 1.5e20 1\nf 1 2 3\n");
+  EXPECT_EQ(errorOf([&] { loadScene(huge); }), huge + ": the model is too large to frame (its bounds span more than 1e18 units)");
+}
+
 TEST(SceneLoader, EmptyMeshFileNamesTheFile) {
   const std::string path = writeFile("empty.off", "");
   const std::string msg = errorOf([] { parse(sceneJson(R"([{"type": "mesh", "material": "grey", "file": "empty.off"}])")); });
