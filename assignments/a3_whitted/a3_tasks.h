@@ -31,7 +31,8 @@ bool refract(Vec3 d, Vec3 n, float eta, Vec3& t);
 // into its s and p parts. cosI = cos(theta_i) in [0, 1] on the side of index
 // n1; the far side has index n2. Rs and Rp are the reflectances (squared
 // amplitude ratios) of s- and p-polarised light; both are 1 under total
-// internal reflection. The unpolarised reflectance is (Rs + Rp) / 2.
+// internal reflection, and both 0 when n1 == n2 (no interface), even at
+// grazing incidence. The unpolarised reflectance is (Rs + Rp) / 2.
 struct FresnelTerms {
   float rs = 1.0f;
   float rp = 1.0f;

@@ -87,7 +87,8 @@ void transmittances(float cosI, float n1, float n2, float& ts2, float& tp2) {
 }
 
 TEST(A3_3_Fresnel, ReflectedPlusTransmittedIsOneAtEveryAngle) {
-  for (const auto& [n1, n2] : {std::pair{1.0f, 1.5f}, std::pair{1.5f, 1.0f}, std::pair{1.33f, 1.5f}}) {
+  for (const auto& indices : {std::pair{1.0f, 1.5f}, std::pair{1.5f, 1.0f}, std::pair{1.33f, 1.5f}}) {
+    const float n1 = indices.first, n2 = indices.second;  // not a structured binding: Clang 14 cannot capture those
     for (float deg = 0.0f; deg < 89.5f; deg += 2.5f) {
       const float cosI = std::cos(deg * kDeg);
       if ((n1 / n2) * std::sin(deg * kDeg) >= 1.0f) break;  // beyond the critical angle

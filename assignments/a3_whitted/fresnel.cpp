@@ -7,6 +7,7 @@ namespace ll::a3 {
 
 FresnelTerms fresnelDielectric(float cosI, float n1, float n2) {
 #if LIGHTLAB_SOLUTION  // A3.3
+  if (n1 == n2) return {0.0f, 0.0f};  // no interface (nested media of one index): even at grazing incidence
   const float c = std::clamp(cosI, 0.0f, 1.0f);
   const float sin2T = (n1 / n2) * (n1 / n2) * (1.0f - c * c);
   if (sin2T >= 1.0f) return {1.0f, 1.0f};  // total internal reflection

@@ -168,7 +168,12 @@ class Builder {
       if (!(hi > lo)) continue;
       const float scale = static_cast<float>(bins) / (hi - lo);
       std::array<uint32_t, kMaxBins> starts{}, ends{};
-      auto binOf = [&](float x) { return static_cast<size_t>(std::clamp(static_cast<int>((x - lo) * scale), 0, bins - 1)); };
+      // Clamped as a float before the conversion: (x - lo) * scale is 0 * inf = NaN in a cell thinner than
+      // float resolution, and beyond int's range for far boxes (both undefined as an int).
+      auto binOf = [&](float x) {
+        const float f = (x - lo) * scale;
+        return f >= static_cast<float>(bins - 1) ? static_cast<size_t>(bins - 1) : f > 0.0f ? static_cast<size_t>(f) : 0;
+      };
       for (const KdPrim& p : prims) {
         ++starts[binOf(p.box.min[a])];
         ++ends[binOf(p.box.max[a])];

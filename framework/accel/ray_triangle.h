@@ -30,8 +30,9 @@ struct WatertightRay {
 
 // Tests the triangle (p0, p1, p2) for t in (tmin, tmax). On a hit returns true
 // and sets t and the barycentrics b1, b2 of p1 and p2 (b0 = 1 - b1 - b2).
-// Both faces hit. Exactly collinear vertices may still report hits through
-// rounding: the scene loaders drop zero-area triangles before they get here.
+// Both faces hit. Zero-area triangles (repeated or exactly collinear
+// vertices: cross(p1 - p0, p2 - p0) == 0) never hit, so no hit ever needs a
+// normal that does not exist; the scene loaders drop them as well.
 inline bool intersectTriangle(const WatertightRay& r, const Vec3& p0, const Vec3& p1, const Vec3& p2,
                               float tmin, float tmax, float& t, float& b1, float& b2) {
   const Vec3 a = p0 - r.origin, b = p1 - r.origin, c = p2 - r.origin;
@@ -49,6 +50,9 @@ inline bool intersectTriangle(const WatertightRay& r, const Vec3& p0, const Vec3
   if ((u < 0.0f || v < 0.0f || w < 0.0f) && (u > 0.0f || v > 0.0f || w > 0.0f)) return false;
   const float det = u + v + w;
   if (det == 0.0f) return false;
+  // Collinear vertices shear to a sliver whose rounded edge functions can agree in sign: checked only
+  // for rays that passed the edge tests, so the common miss costs nothing.
+  if (glm::cross(p1 - p0, p2 - p0) == Vec3(0.0f)) return false;
   const float az = r.sz * a[r.kz], bz = r.sz * b[r.kz], cz = r.sz * c[r.kz];
   const float tScaled = u * az + v * bz + w * cz;
   const float invDet = 1.0f / det;

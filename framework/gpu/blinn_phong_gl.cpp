@@ -137,7 +137,6 @@ class BlinnPhongGl final : public Technique {
   void renderPass(const RenderContext& ctx, int pass, FrameBuffer& fb, WorkCounters& counters,
                   const std::atomic<bool>& cancel) override {
     (void)pass;
-    (void)counters;
     const ParamSet& p = ctx.params;
     const int scale = p.getChoice("samples") == "16" ? 4 : p.getChoice("samples") == "4" ? 2 : 1;
     const Camera camera = renderCamera(ctx.scene, ctx.settings);
@@ -280,7 +279,10 @@ class BlinnPhongGl final : public Technique {
             sum += Rgb(px[0], px[1], px[2]);
           }
         Rgb value = sum * norm;
-        if (!isFinite(value)) value = Rgb(0.0f);
+        if (!isFinite(value)) {  // never a NaN in a pixel: counted and drawn as 0
+          ++counters.nonFinite;
+          value = Rgb(0.0f);
+        }
         fb.add(x, y, value);
       }
   }

@@ -1,8 +1,10 @@
 #include "scene/json_document.h"
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <sstream>
 
 #include "core/error.h"
@@ -246,7 +248,9 @@ JsonNode JsonNode::at(size_t index) const {
 float JsonNode::asNumber() const {
   if (!value_->is_number()) fail(what_ + " must be a number, got " + typeName(*value_));
   const double v = value_->get<double>();
-  if (!std::isfinite(v)) fail(what_ + " must be finite");
+  // Numbers are floats: beyond +-3.4e38 they would become infinite (and the conversion is undefined).
+  if (!(std::abs(v) <= static_cast<double>(std::numeric_limits<float>::max())))
+    fail(what_ + " = " + value_->dump() + " is not a finite float (|x| <= 3.4e38)");
   return static_cast<float>(v);
 }
 

@@ -211,6 +211,21 @@ TEST(JsonNode, TypedGettersReportAtTheValue) {
   EXPECT_EQ(errorOf([&] { root.child("s").requireArray(); }), "t.json:6:3: cfg.s must be an array, got a string");
 }
 
+TEST(JsonNode, NumbersBeyondTheFloatRangeAreRejectedNotMadeInfinite) {
+  // 1e39 is a finite double but no float: it used to become +inf (a sphere of infinite radius rendered).
+  const std::string text = R"({
+  "big": 1e39,
+  "v": [0, -3.5e38, 0],
+  "edge": 3.4e38
+})";
+  const JsonDocument doc(text, "t.json");
+  const JsonNode root(doc, doc.root(), "", "cfg");
+  EXPECT_EQ(errorOf([&] { root.number("big", 0.0f, kInfinity); }),
+            "t.json:2:3: cfg.big = 1e+39 is not a finite float (|x| <= 3.4e38)");
+  EXPECT_TRUE(contains(errorOf([&] { root.vec3("v"); }), "cfg.v[1] = -3.5e+38 is not a finite float (|x| <= 3.4e38)"));
+  EXPECT_FLOAT_EQ(root.number("edge", 0.0f, kInfinity), 3.4e38f);
+}
+
 TEST(JsonNode, AllowOnlyNamesTheUnknownKeyAndListsAllowed) {
   const std::string text = "{\n  \"eye\": [0, 0, 1],\n  \"fovy\": 40\n}";
   const JsonDocument doc(text, "c.json");

@@ -6,6 +6,7 @@
 // OpenMesh wants its IO header before the mesh type.
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include <OpenMesh/Core/System/omstream.hh>
 
 #include "core/error.h"
 
@@ -35,6 +36,9 @@ TriangleMesh loadMeshFile(const std::string& path, bool smoothNormals) {
   OpenMesh::IO::Options options;
   options += OpenMesh::IO::Options::VertexNormal;
   options += OpenMesh::IO::Options::VertexTexCoord;
+  // OpenMesh reports problems on its own stream (stderr); ours is the one line of the UserError below.
+  omerr().disable();
+  omlog().disable();
   if (!OpenMesh::IO::read_mesh(mesh, path, options))
     throwUserError(path + ": OpenMesh could not read this mesh (is it a valid " + ext + " file?)");
   if (mesh.n_faces() == 0) throwUserError(path + ": the mesh has no faces");

@@ -66,11 +66,29 @@ Scene loadObjScene(const std::string& path) {
   Geometry& g = scene.geometry;
   const bool hasNormals = !attrib.normals.empty();
   const bool hasUvs = !attrib.texcoords.empty();
+  // tinyobjloader resolves negative (relative) indices but does not check any against the counts.
+  const auto checkIndex = [&](int index, size_t count, size_t line, const char* what) {
+    if (index < 0 || static_cast<size_t>(index) >= count)
+      throwUserError(path + ": face " + std::to_string(line) + " uses " + what + " " + std::to_string(index + 1) +
+                     ", but the file has " + std::to_string(count));
+  };
+  size_t faceNumber = 0;  // over all shapes, 1-based in messages
   for (const auto& shape : reader.GetShapes()) {
     std::map<int, uint32_t> objectOfMaterial;  // one scene object per (shape, material)
     const auto& mesh = shape.mesh;
-    for (size_t f = 0; f < mesh.num_face_vertices.size(); ++f) {
-      const int mat = f < mesh.material_ids.size() ? mesh.material_ids[f] : -1;
+    size_t first = 0;  // of face f's indices in mesh.indices
+    for (size_t f = 0; f < mesh.num_face_vertices.size(); first += mesh.num_face_vertices[f], ++f) {
+      ++faceNumber;
+      if (mesh.num_face_vertices[f] != 3 || first + 3 > mesh.indices.size()) continue;  // not a triangle: nothing to hit
+      for (size_t k = 0; k < 3; ++k) {
+        const tinyobj::index_t idx = mesh.indices[first + k];
+        checkIndex(idx.vertex_index, attrib.vertices.size() / 3, faceNumber, "vertex");
+        if (hasNormals && idx.normal_index >= 0) checkIndex(idx.normal_index, attrib.normals.size() / 3, faceNumber, "normal");
+        if (hasUvs && idx.texcoord_index >= 0)
+          checkIndex(idx.texcoord_index, attrib.texcoords.size() / 2, faceNumber, "texture coordinate");
+      }
+      int mat = f < mesh.material_ids.size() ? mesh.material_ids[f] : -1;
+      if (mat >= static_cast<int>(defaultMaterial)) mat = -1;  // not among the materials read
       auto [it, added] = objectOfMaterial.try_emplace(mat, static_cast<uint32_t>(scene.objects.size()));
       if (added) {
         SceneObject o;
@@ -82,7 +100,7 @@ Scene loadObjScene(const std::string& path) {
       }
       glm::uvec3 tri;
       for (int k = 0; k < 3; ++k) {
-        const tinyobj::index_t idx = mesh.indices[3 * f + static_cast<size_t>(k)];
+        const tinyobj::index_t idx = mesh.indices[first + static_cast<size_t>(k)];
         tri[k] = static_cast<unsigned>(g.positions.size());
         const auto vi = static_cast<size_t>(idx.vertex_index);
         const Vec3 p(attrib.vertices[3 * vi], attrib.vertices[3 * vi + 1], attrib.vertices[3 * vi + 2]);
@@ -132,6 +150,9 @@ Scene loadObjScene(const std::string& path) {
   // A camera framing the bounds from +z, and a light at the eye if nothing emits.
   const Bounds3 b = g.sceneBounds();
   const float radius = std::max(0.5f * b.diagonal(), 1e-3f);
+  // Beyond this the framing camera's distance and the light's squared distance overflow a float.
+  if (!(radius <= 1e18f))
+    throwUserError(path + ": the model is too large to frame (its bounds span more than 1e18 units)");
   scene.camera.fovYDeg = 45.0f;
   scene.camera.target = b.center();
   scene.camera.eye = b.center() + Vec3(0.0f, 0.25f * radius, 2.6f * radius);

@@ -247,6 +247,9 @@ TEST(SceneLoader, BadFileHints) {
   // The mesh path is the absolute one that was tried.
   const std::string mesh = errorOf([&] { loadScene(bad + "missing_mesh.json"); });
   EXPECT_TRUE(contains(mesh, "mesh file not found: " + bad + "does_not_exist.ply")) << mesh;
+  // An OBJ face naming a vertex the file does not have (found by the OBJ fuzzer: it read past the vertices).
+  EXPECT_EQ(errorOf([&] { loadScene(bad + "obj_bad_index.obj"); }),
+            bad + "obj_bad_index.obj: face 1 uses vertex 4, but the file has 3");
 }
 
 TEST(SceneLoader, EveryBadFileIsCovered) {
@@ -256,7 +259,7 @@ TEST(SceneLoader, EveryBadFileIsCovered) {
     EXPECT_THROW(loadScene(entry.path().string()), UserError) << entry.path();
     ++n;
   }
-  EXPECT_EQ(n, 6);
+  EXPECT_EQ(n, 7);
 }
 
 // --- In-memory scenes: errors ------------------------------------------------------
@@ -388,6 +391,12 @@ TEST(SceneLoader, BinaryMeshWithNaNCoordinateIsRejected) {
   });
   EXPECT_TRUE(startsWith(msg, "mem.json:5:")) << msg;
   EXPECT_TRUE(contains(msg, path + ": vertex 1 has a non-finite coordinate")) << msg;
+}
+
+TEST(SceneLoader, ObjTooLargeToFrameIsAnError) {
+  // Coordinates so large the framing camera overflowed to inf (found by the OBJ fuzzer).
+  const std::string huge = writeFile("huge.obj", "v -1 -1 -1\nv 1 -1 -1\nv -1 1.5e20 1\nf 1 2 3\n");
+  EXPECT_EQ(errorOf([&] { loadScene(huge); }), huge + ": the model is too large to frame (its bounds span more than 1e18 units)");
 }
 
 TEST(SceneLoader, EmptyMeshFileNamesTheFile) {

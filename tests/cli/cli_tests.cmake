@@ -12,12 +12,12 @@ function(lightlab_error_test name regex)
            COMMAND bash ${EXPECT_ERROR} "${regex}" ${OUT}/${name}.png -- ${LL} ${ARGN})
 endfunction()
 
-lightlab_error_test(missing_scene "nope\\.json: no such scene file" render ${SCENES}/nope.json -o ${OUT}/missing_scene.png)
-lightlab_error_test(malformed_json "malformed_json\\.json:6:5: malformed JSON: .*missing comma"
+lightlab_error_test(missing_scene "^lightlab: error: .*/nope\\.json: no such scene file$" render ${SCENES}/nope.json -o ${OUT}/missing_scene.png)
+lightlab_error_test(malformed_json "malformed_json\\.json:6:5: malformed JSON: syntax error while parsing object - unexpected string literal; expected '}' \\(a missing comma before it\\?\\)$"
                     render ${SCENES}/tests/bad/malformed_json.json -o ${OUT}/malformed_json.png)
-lightlab_error_test(unknown_key "unknown_key\\.json:6:5: unknown key 'fovy' in scene\\.camera \\(allowed: eye, target"
+lightlab_error_test(unknown_key "unknown_key\\.json:6:5: unknown key 'fovy' in scene\\.camera \\(allowed: eye, target, up, fov_y_deg, width, height\\)$"
                     render ${SCENES}/tests/bad/unknown_key.json -o ${OUT}/unknown_key.png)
-lightlab_error_test(wrong_type "wrong_type\\.json:[0-9]+:[0-9]+: .*radius must be a number, got a string"
+lightlab_error_test(wrong_type "wrong_type\\.json:27:7: scene\\.objects\\[0\\]\\.radius must be a number, got a string$"
                     render ${SCENES}/tests/bad/wrong_type.json -o ${OUT}/wrong_type.png)
 lightlab_error_test(negative_radius "negative_radius\\.json:[0-9]+:[0-9]+: .*radius must be > 0"
                     render ${SCENES}/tests/bad/negative_radius.json -o ${OUT}/negative_radius.png)
@@ -29,7 +29,7 @@ lightlab_error_test(unknown_technique "unknown technique 'phong' \\(known: blinn
                     render ${SCENES}/cornell_box.json -t phong -o ${OUT}/unknown_technique.png)
 lightlab_error_test(unknown_accelerator "unknown accelerator 'kd' \\(known: none"
                     render ${SCENES}/cornell_box.json -a kd -o ${OUT}/unknown_accelerator.png)
-lightlab_error_test(out_of_range "parameter 'light_samples' = 0 is out of range \\[1, 1024\\]"
+lightlab_error_test(out_of_range "^lightlab: error: technique 'raycast' parameter 'light_samples' = 0 is out of range \\[1, 1024\\]$"
                     render ${SCENES}/cornell_box.json --set light_samples=0 -o ${OUT}/out_of_range.png)
 lightlab_error_test(unknown_parameter "has no parameter 'samples' \\(parameters: light_samples"
                     render ${SCENES}/cornell_box.json --set samples=4 -o ${OUT}/unknown_parameter.png)
@@ -39,6 +39,21 @@ lightlab_error_test(bad_extension "unknown image extension '\\.bmp' \\(allowed: 
                     render ${SCENES}/tests/sphere_point_light.json -o ${OUT}/bad_extension.bmp)
 lightlab_error_test(spp_range "--spp: Value 0 not in range"
                     render ${SCENES}/cornell_box.json --spp 0 -o ${OUT}/spp_range.png)
+
+# The rest of the README's bad-input table (tests/cli/bad_input/): one line each, no image written.
+set(BAD_INPUT ${CMAKE_CURRENT_LIST_DIR}/bad_input)
+lightlab_error_test(mesh_nan_coordinate "nan_mesh\\.json:5:52: /.*/nan_vertex\\.stl: vertex 1 has a non-finite coordinate$"
+                    render ${BAD_INPUT}/nan_mesh.json -o ${OUT}/mesh_nan_coordinate.png)
+lightlab_error_test(mesh_empty "empty_mesh\\.json:5:52: /.*/empty\\.off: the mesh has no faces$"
+                    render ${BAD_INPUT}/empty_mesh.json -o ${OUT}/mesh_empty.png)
+lightlab_error_test(zero_area_light "zero_area_light\\.json:5:15: emissive object 'triangles 0' has zero area: it cannot light anything$"
+                    render ${BAD_INPUT}/zero_area_light.json -o ${OUT}/zero_area_light.png)
+lightlab_error_test(camera_up_parallel "up_parallel\\.json:2:3: camera up is parallel to the view direction \\(target - eye\\); choose another up$"
+                    render ${BAD_INPUT}/up_parallel.json -o ${OUT}/camera_up_parallel.png)
+lightlab_error_test(number_beyond_float "huge_number\\.json:5:75: scene\\.objects\\[0\\]\\.radius = 1e\\+39 is not a finite float \\(\\|x\\| <= 3\\.4e38\\)$"
+                    render ${BAD_INPUT}/huge_number.json -o ${OUT}/number_beyond_float.png)
+lightlab_error_test(obj_bad_face_index "obj_bad_index\\.obj: face 1 uses vertex 4, but the file has 3$"
+                    render ${SCENES}/tests/bad/obj_bad_index.obj -o ${OUT}/obj_bad_face_index.png)
 
 # Renders that must succeed and write their files.
 add_test(NAME cli.render.cornell_box

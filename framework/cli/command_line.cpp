@@ -1,0 +1,56 @@
+#include "cli/command_line.h"
+
+#include <cstdio>
+#include <exception>
+#include <memory>
+
+#include <tbb/global_control.h>
+
+#include "core/error.h"
+
+namespace ll::cli {
+
+CommandLine::CommandLine() {
+  app.require_subcommand(1);
+  app.add_flag("-q,--quiet", global.quiet, "No progress bars");
+  app.add_option("--threads", global.threads, "Worker threads (default: all cores)")->check(CLI::Range(0, 1024));
+  commands = {
+      {"render", addRenderCommand(app, global)},
+      {"info", addInfoCommand(app, global)},
+      {"trace", addTraceCommand(app, global)},
+      {"compare", addCompareCommand(app, global)},
+      {"radiosity", addRadiosityCommand(app, global)},
+      {"grade", addGradeCommand(app, global)},
+      {"study", addStudyCommand(app, global)},
+  };
+#ifdef LIGHTLAB_HAVE_GUI
+  commands["gui"] = addGuiCommand(app, global);
+#endif
+}
+
+int runCommandLine(int argc, const char* const* argv) {
+  CommandLine cl;
+  try {
+    cl.app.parse(argc, argv);
+    std::unique_ptr<tbb::global_control> threads;
+    if (cl.global.threads > 0)
+      threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                      static_cast<size_t>(cl.global.threads));
+    for (CLI::App* sub : cl.app.get_subcommands()) cl.commands.at(sub->get_name())();
+  } catch (const CLI::RuntimeError& e) {
+    return e.get_exit_code();  // a command's own verdict (e.g. compare --max), already explained
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return cl.app.exit(e);  // --help
+    std::fprintf(stderr, "lightlab: error: %s (see lightlab --help)\n", e.what());
+    return 2;
+  } catch (const UserError& e) {
+    std::fprintf(stderr, "lightlab: error: %s\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "lightlab: internal error: %s\n", e.what());
+    return 3;
+  }
+  return 0;
+}
+
+}  // namespace ll::cli
