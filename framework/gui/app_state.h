@@ -21,7 +21,7 @@
 #include "gui/gl_texture.h"
 #include "gui/pane_renderer.h"
 #include "gui/ray_inspector.h"
-#include "gui/view_preset.h"
+#include "preset/view_preset.h"
 #include "metrics/image_metrics.h"
 #include "scene/scene.h"
 

@@ -1,4 +1,4 @@
-#include "gui/view_preset.h"
+#include "preset/view_preset.h"
 
 #include <filesystem>
 #include <fstream>
@@ -12,7 +12,7 @@
 #include "scene/json_document.h"
 #include "scene/scene_loader.h"
 
-namespace ll::gui {
+namespace ll {
 
 namespace fs = std::filesystem;
 
@@ -240,4 +240,4 @@ void savePreset(const ViewPreset& preset, const std::string& path) {
   out << presetToJson(preset, fs::path(path).parent_path().string()).dump(2) << "\n";
 }
 
-}  // namespace ll::gui
+}  // namespace ll

@@ -14,7 +14,7 @@
 #include "metrics/image_metrics.h"
 #include "scene/camera.h"
 
-namespace ll::gui {
+namespace ll {
 
 constexpr int kMaxPanes = 4;
 
@@ -68,4 +68,4 @@ ViewPreset parsePreset(const std::string& text, const std::string& file,
 void savePreset(const ViewPreset& preset, const std::string& path);
 nlohmann::json presetToJson(const ViewPreset& preset, const std::string& baseDir);
 
-}  // namespace ll::gui
+}  // namespace ll
