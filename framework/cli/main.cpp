@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
       {"radiosity", addRadiosityCommand(app, global)},
       {"grade", addGradeCommand(app, global)},
       {"study", addStudyCommand(app, global)},
+      {"slides", addSlidesCommand(app, global)},
   };
 #ifdef LIGHTLAB_HAVE_GUI
   commands["gui"] = addGuiCommand(app, global);
