@@ -179,6 +179,22 @@ std::string superscript(const std::string& s) {
   return out;
 }
 
+// Unicode subscripts exist for digits and a few letters only; others keep the underscore.
+std::string subscript(const std::string& s) {
+  static const std::map<char, std::string> sub = {
+      {'0', "₀"}, {'1', "₁"}, {'2', "₂"}, {'3', "₃"}, {'4', "₄"}, {'5', "₅"}, {'6', "₆"}, {'7', "₇"},
+      {'8', "₈"}, {'9', "₉"}, {'+', "₊"}, {'-', "₋"}, {'a', "ₐ"}, {'e', "ₑ"}, {'o', "ₒ"}, {'x', "ₓ"},
+      {'h', "ₕ"}, {'k', "ₖ"}, {'l', "ₗ"}, {'m', "ₘ"}, {'n', "ₙ"}, {'p', "ₚ"}, {'s', "ₛ"}, {'t', "ₜ"},
+      {'i', "ᵢ"}, {'j', "ⱼ"}, {'r', "ᵣ"}, {'u', "ᵤ"}, {'v', "ᵥ"}};
+  std::string out;
+  for (const char ch : s) {
+    const auto it = sub.find(ch);
+    if (it == sub.end()) return "_" + (s.size() > 1 ? "(" + s + ")" : s);
+    out += it->second;
+  }
+  return out;
+}
+
 struct MathReader {
   const std::string& s;
   size_t i = 0;
@@ -237,7 +253,7 @@ std::string mathAsText(const std::string& latex) {
       out += superscript(r.argument());
     } else if (ch == '_') {
       ++r.i;
-      out += "_" + r.argument();
+      out += subscript(r.argument());
     } else if (ch == '{' || ch == '}') {
       ++r.i;
     } else if (ch == '\n') {
