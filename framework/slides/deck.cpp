@@ -15,9 +15,9 @@ namespace fs = std::filesystem;
 namespace {
 
 std::string trimmed(const std::string& s) {
-  const size_t a = s.find_first_not_of(" \t\r");
+  const size_t a = s.find_first_not_of(" \t\r\n");
   if (a == std::string::npos) return "";
-  return s.substr(a, s.find_last_not_of(" \t\r") - a + 1);
+  return s.substr(a, s.find_last_not_of(" \t\r\n") - a + 1);
 }
 
 // "```lang" or "~~~lang" (up to 3 spaces of indent): the fence, else "".
@@ -41,6 +41,13 @@ struct DeckParser {
     throwUserError(path + ":" + std::to_string(line) + ": " + message);
   }
 
+  // The preset's scene must exist: a deck that names a missing scene fails when it loads, not in class.
+  SlidePreset checked(SlidePreset p) const {
+    if (!fs::is_regular_file(p.preset.scene))
+      fail(p.line + 1, "the preset's scene '" + p.preset.scene + "' not found");
+    return p;
+  }
+
   SlidePreset parseBlock(int fenceLine, const std::vector<std::string>& body) const {
     SlidePreset p;
     p.line = fenceLine;
@@ -59,7 +66,7 @@ struct DeckParser {
       for (const std::string& l : body) text += l + "\n";
       p.source = "inline";
       p.preset = parsePreset(text, path, dir, true);
-      return p;
+      return checked(p);
     }
     if (count > 1)
       fail(fenceLine, "a preset block holds a JSON view preset or one preset file path, not " +
@@ -69,7 +76,7 @@ struct DeckParser {
     if (!fs::is_regular_file(file))
       fail(fenceLine + 1, "preset file '" + first + "' not found (looked for " + file.lexically_normal().string() + ")");
     p.preset = loadPreset(file.lexically_normal().string());
-    return p;
+    return checked(p);
   }
 
   void finishSlide(Slide& s) {

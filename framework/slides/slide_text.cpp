@@ -1,5 +1,6 @@
 #include "slides/slide_text.h"
 
+#include <algorithm>
 #include <cctype>
 #include <map>
 
@@ -166,6 +167,11 @@ bool isTextWrapper(const std::string& name) {
          name == "boldsymbol" || name == "operatorname" || name == "textrm" || name == "mathsf" || name == "bm";
 }
 
+// Characters in UTF-8 text (bytes that do not continue a sequence).
+size_t codePoints(const std::string& s) {
+  return static_cast<size_t>(std::count_if(s.begin(), s.end(), [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; }));
+}
+
 std::string superscript(const std::string& s) {
   static const std::map<char, std::string> sup = {{'0', "⁰"}, {'1', "¹"}, {'2', "²"}, {'3', "³"}, {'4', "⁴"},
                                                   {'5', "⁵"}, {'6', "⁶"}, {'7', "⁷"}, {'8', "⁸"}, {'9', "⁹"},
@@ -173,7 +179,7 @@ std::string superscript(const std::string& s) {
   std::string out;
   for (const char ch : s) {
     const auto it = sup.find(ch);
-    if (it == sup.end()) return "^(" + s + ")";
+    if (it == sup.end()) return codePoints(s) > 1 ? "^(" + s + ")" : "^" + s;
     out += it->second;
   }
   return out;
@@ -189,7 +195,7 @@ std::string subscript(const std::string& s) {
   std::string out;
   for (const char ch : s) {
     const auto it = sub.find(ch);
-    if (it == sub.end()) return "_" + (s.size() > 1 ? "(" + s + ")" : s);
+    if (it == sub.end()) return "_" + (codePoints(s) > 1 ? "(" + s + ")" : s);
     out += it->second;
   }
   return out;
