@@ -5,7 +5,7 @@
 # the builder) has its figure embedded as a decodable PNG under its slide's
 # anchor, no figure failed, every slide is a section, the equations are
 # KaTeX elements with KaTeX and its fonts inlined, and nothing is loaded from
-# the network.
+# the network; and the handouts link to slides that exist.
 #   slides_build_test.sh LIGHTLAB OUT_DIR
 set -euo pipefail
 LL=$1 OUT=$2
@@ -56,5 +56,11 @@ for deck in decks:
         assert '<x-equation' in html, page + ': no equations found'
     total += presets
     print('ok %s: %d slides, %d figures' % (os.path.basename(page), len(sections), presets))
+# The handouts' links into the decks name slides that exist.
+root = os.path.dirname(slides)
+for readme in glob.glob(os.path.join(root, 'assignments', '*', 'README.md')) + [os.path.join(root, 'README.md')]:
+    for deck, anchor in re.findall(r'slides/([a-z_]+)\.md(?:#([a-z0-9-]+))?\)', open(readme, encoding='utf-8').read()):
+        page = open(os.path.join(out, deck + '.html'), encoding='utf-8').read()
+        assert not anchor or 'id="%s"' % anchor in page, '%s links to a missing slide %s#%s' % (readme, deck, anchor)
 print('slides build OK: %d figures in %d decks' % (total, len(decks)))
 PY
