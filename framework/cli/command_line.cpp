@@ -22,6 +22,7 @@ CommandLine::CommandLine() {
       {"radiosity", addRadiosityCommand(app, global)},
       {"grade", addGradeCommand(app, global)},
       {"study", addStudyCommand(app, global)},
+      {"slides", addSlidesCommand(app, global)},
   };
 #ifdef LIGHTLAB_HAVE_GUI
   commands["gui"] = addGuiCommand(app, global);

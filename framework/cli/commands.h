@@ -23,6 +23,7 @@ Command addCompareCommand(CLI::App& app, const GlobalOptions& global);
 Command addRadiosityCommand(CLI::App& app, const GlobalOptions& global);
 Command addGradeCommand(CLI::App& app, const GlobalOptions& global);
 Command addStudyCommand(CLI::App& app, const GlobalOptions& global);
+Command addSlidesCommand(CLI::App& app, const GlobalOptions& global);
 #ifdef LIGHTLAB_HAVE_GUI
 Command addGuiCommand(CLI::App& app, const GlobalOptions& global);
 #endif

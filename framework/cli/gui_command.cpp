@@ -1,4 +1,4 @@
-// lightlab gui [SCENE] [--preset FILE] [--screenshot FILE --frames N]
+// lightlab gui [SCENE] [--preset FILE] [--slides DECK.md [--slide N]] [--screenshot FILE --frames N]
 #include <memory>
 
 #include "cli/commands.h"
@@ -11,6 +11,9 @@ Command addGuiCommand(CLI::App& app, const GlobalOptions& global) {
   CLI::App* cmd = app.add_subcommand("gui", "Open the interactive window (panes, compare modes, presets)");
   cmd->add_option("scene", o->scene, "Scene file (.json or .obj); default: the Cornell box or the preset's scene");
   cmd->add_option("--preset", o->preset, "View preset (JSON) to open: scene, camera, panes, compare mode");
+  cmd->add_option("--slides", o->slides,
+                  "Presenter mode: this deck (slides/*.md) beside the panes; arrows, PageUp/PageDown, space step");
+  cmd->add_option("--slide", o->slide, "With --slides: start at this slide (1-based)")->check(CLI::Range(1, 100000));
   cmd->add_option("--screenshot", o->screenshot,
                   "Save the window to this PNG (plus a .json sidecar) once every pane has finished, then exit");
   cmd->add_option("--frames", o->frames, "With --screenshot: draw at least this many UI frames first")

@@ -20,8 +20,9 @@
 #include "gui/display_image.h"
 #include "gui/gl_texture.h"
 #include "gui/pane_renderer.h"
+#include "gui/presenter.h"
 #include "gui/ray_inspector.h"
-#include "gui/view_preset.h"
+#include "preset/view_preset.h"
 #include "metrics/image_metrics.h"
 #include "scene/scene.h"
 
@@ -129,6 +130,7 @@ struct AppState {
   bool showStructure = false;  // draw the accelerator's nodes over each pane
   int structureDepth = 3;      // at this depth (root = 0)
   RayInspector inspector;      // the ray tree of a clicked pixel
+  PresenterState presenter;    // --slides: the deck and the slide on screen
   float uiScale = 1.0f;        // user's scale, times the monitor's content scale
   float contentScale = 1.0f;
   float appliedFontScale = 0.0f;

@@ -21,8 +21,10 @@
 #include "core/error.h"
 #include "gpu/offscreen_gl.h"
 #include "gui/app_actions.h"
+#include "gui/presenter.h"
 #include "gui/screenshot.h"
 #include "gui/side_panel.h"
+#include "gui/slide_panel.h"
 #include "gui/viewport.h"
 
 namespace ll::gui {
@@ -35,6 +37,7 @@ constexpr const char* kFontPath =
     "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";  // Debian fonts-dejavu-core
 constexpr float kBaseFontPixels = 15.0f;
 constexpr float kPanelWidth = 400.0f;  // at UI scale 1
+constexpr float kSlidePanelFraction = 0.42f;  // of the window's width, in presenter mode
 
 // GLFW's last error, folded into our one-line messages instead of printed.
 std::string gLastGlfwError;
@@ -66,6 +69,7 @@ void onKey(GLFWwindow* window, int key, int scancode, int action, int mods) {
   if (!app || action != GLFW_PRESS) return;
   if (key == GLFW_KEY_F11) app->toggleFullscreenRequest = true;
   if (key == GLFW_KEY_F12) app->screenshotRequest = timestampedName();
+  if (!ImGui::GetIO().WantTextInput) handleSlideKey(*app, key);  // presenter mode only
 }
 
 // Rebuilds the font atlas when the effective scale changed (between frames).
@@ -74,9 +78,13 @@ void applyUiScale(AppState& app) {
   if (std::abs(scale - app.appliedFontScale) < 1e-3f) return;
   ImGuiIO& io = ImGui::GetIO();
   io.Fonts->Clear();
-  if (fs::exists(kFontPath))
-    io.Fonts->AddFontFromFileTTF(kFontPath, std::round(kBaseFontPixels * scale));
-  else {
+  if (fs::exists(kFontPath)) {
+    // Presenter mode: Greek and math glyphs for the slides' equations, and the slide fonts.
+    const bool slides = app.presenter.active();
+    io.Fonts->AddFontFromFileTTF(kFontPath, std::round(kBaseFontPixels * scale), nullptr,
+                                 slides ? slideGlyphRanges() : nullptr);
+    if (slides) addSlideFonts(app, std::round(kBaseFontPixels * scale));
+  } else {
     ImFontConfig config;
     config.SizePixels = std::round(13.0f * scale);
     io.Fonts->AddFontDefault(&config);
@@ -95,6 +103,7 @@ void applyUiScale(AppState& app) {
 void updateApp(AppState& app) {
   for (const std::string& path : app.droppedFiles) openDroppedFile(app, path);
   app.droppedFiles.clear();
+  takeSlideRequest(app);
   pollSceneLoad(app);
   watchSceneFile(app);
   submitPanes(app);
@@ -144,6 +153,8 @@ int runGui(const GuiOptions& options) {
   // Validate the named files before opening a window, so a typo fails fast.
   std::optional<ViewPreset> preset;
   if (!options.preset.empty()) preset = loadPreset(options.preset);
+  std::optional<Deck> deck;
+  if (!options.slides.empty()) deck = loadDeck(options.slides);
   if (!options.scene.empty() && !fs::exists(options.scene))
     throwUserError(options.scene + ": cannot open file");
 
@@ -191,9 +202,13 @@ int runGui(const GuiOptions& options) {
     app.contentScale = std::max(xs, ys);
 
     if (preset) applyPreset(app, *preset);
+    if (deck) {
+      app.uiScale = kPresenterUiScale;
+      openDeck(app, std::move(*deck), options.slide - 1);
+    }
     if (!options.scene.empty())
       openScene(app, options.scene, preset && preset->camera);
-    else if (!preset)
+    else if (!preset && app.presenter.applied < 0)
       openScene(app, defaultScenePath());
     if (options.uiScale > 0.0f) app.uiScale = options.uiScale;
     std::snprintf(app.pathInput, sizeof app.pathInput, "%s", options.scene.c_str());
@@ -216,8 +231,13 @@ int runGui(const GuiOptions& options) {
 
       // 3. The UI: side panel, image area, input, keys.
       const ImGuiIO& io = ImGui::GetIO();
-      const float panelW = std::min(kPanelWidth * app.appliedFontScale, io.DisplaySize.x * 0.5f);
-      drawSidePanel(app, window, panelW, io.DisplaySize.y);
+      const bool slide = app.presenter.active() && !app.presenter.showControls;
+      const float panelW = slide ? io.DisplaySize.x * kSlidePanelFraction
+                                 : std::min(kPanelWidth * app.appliedFontScale, io.DisplaySize.x * 0.5f);
+      if (slide)
+        drawSlidePanel(app, 0.0f, 0.0f, panelW, io.DisplaySize.y);
+      else
+        drawSidePanel(app, window, panelW, io.DisplaySize.y);
       const float vx = panelW, vw = std::max(io.DisplaySize.x - panelW, 1.0f);
       drawViewport(app, vx, 0.0f, vw, io.DisplaySize.y);
       handleCameraInput(app, window, vx, 0.0f, vw, io.DisplaySize.y);

@@ -10,6 +10,8 @@ namespace ll::gui {
 struct GuiOptions {
   std::string scene;   // scene to open; empty = the default Cornell box (unless a preset names one)
   std::string preset;  // view preset to apply first
+  std::string slides;  // presenter mode: this Markdown deck beside the panes
+  int slide = 1;       // with `slides`: the slide to start at, 1-based
   std::string screenshot;  // non-empty: after `frames` UI frames and every pane finished, save the
                            // window and exit
   int frames = 10;

@@ -76,6 +76,16 @@ std::string saveScreenshotSidecar(const AppState& app, const std::string& path, 
                      {"pixel", {app.inspector.pixel.x, app.inspector.pixel.y}},
                      {"nodes", app.inspector.tree ? app.inspector.tree->nodes.size() : 0},
                      {"note", app.inspector.note}};
+  if (app.presenter.active()) {
+    const PresenterState& p = app.presenter;
+    const Slide& slide = p.deck->slides[static_cast<size_t>(p.index)];
+    j["slides"] = {{"deck", p.deck->path},
+                   {"index", p.index},
+                   {"count", p.count()},
+                   {"anchor", slide.anchor},
+                   {"applied", p.applied},
+                   {"preset", slide.preset ? slide.preset->source : ""}};
+  }
   j["camera"] = {{"eye", vec(app.camera.eye)},
                  {"target", vec(app.camera.target)},
                  {"up", vec(app.camera.up)},

@@ -134,3 +134,32 @@ lightlab_error_test(study_bad_knob "study: --knob must be NAME=v1,v2,... \\(got 
                     study ${SCENES}/cornell_box.json --knob spp --out ${OUT}/study_bad)
 lightlab_error_test(study_unknown_parameter "technique 'raycast' has no parameter 'depth' \\(parameters: "
                     study ${SCENES}/cornell_box.json --knob depth=1,2 --out ${OUT}/study_bad)
+
+# Slide decks: a bad deck or preset block is one line naming deck:line (or preset:line:col) and what is allowed.
+set(BAD_DECKS ${PROJECT_SOURCE_DIR}/tests/slides/bad)
+lightlab_error_test(slides_missing_deck "nope\\.md: cannot open slide deck" slides check ${BAD_DECKS}/nope.md)
+lightlab_error_test(slides_unknown_key "unknown_key\\.md:9:2: unknown key 'pane' in preset \\(allowed: lightlab_preset, description, scene"
+                    slides check ${BAD_DECKS}/unknown_key.md)
+lightlab_error_test(slides_unknown_technique "unknown_technique\\.md:5:13: unknown technique 'phong' \\(known: blinn-phong, raycast"
+                    slides check ${BAD_DECKS}/unknown_technique.md)
+lightlab_error_test(slides_malformed_json "malformed_json\\.md:7:2: malformed JSON: .*missing comma"
+                    slides check ${BAD_DECKS}/malformed_json.md)
+lightlab_error_test(slides_unterminated_block "unterminated\\.md:3: unterminated preset block \\(close it with ```\\)"
+                    slides check ${BAD_DECKS}/unterminated.md)
+lightlab_error_test(slides_block_option "block_option\\.md:3: unknown preset block option 'live' \\(allowed: none"
+                    slides check ${BAD_DECKS}/block_option.md)
+lightlab_error_test(slides_two_presets "two_presets\\.md:7: a second preset block in the slide of line 1 \\(one per slide"
+                    slides check ${BAD_DECKS}/two_presets.md)
+lightlab_error_test(slides_two_lines "two_lines\\.md:3: a preset block holds a JSON view preset or one preset file path, not 2 lines"
+                    slides check ${BAD_DECKS}/two_lines.md)
+lightlab_error_test(slides_empty_block "empty_block\\.md:3: empty preset block \\(allowed: a JSON view preset, or one line naming a preset file\\)"
+                    slides check ${BAD_DECKS}/empty_block.md)
+lightlab_error_test(slides_missing_preset_file "missing_preset_file\\.md:4: preset file '\\.\\./\\.\\./\\.\\./data/presets/nope\\.json' not found"
+                    slides check ${BAD_DECKS}/missing_preset_file.md)
+lightlab_error_test(slides_missing_scene "missing_scene\\.md:4: the preset's scene '.*data/scenes/nope\\.json' not found"
+                    slides check ${BAD_DECKS}/missing_scene.md)
+lightlab_error_test(slides_build_needs_out "--out is required" slides build ${BAD_DECKS}/unknown_key.md)
+if(LIGHTLAB_WITH_GUI)
+  lightlab_error_test(gui_slides_bad_deck "unknown_key\\.md:9:2: unknown key 'pane' in preset"
+                      gui --slides ${BAD_DECKS}/unknown_key.md)
+endif()

@@ -1,6 +1,6 @@
 // View presets: a saved view loads back identical, and every kind of bad
 // preset is one error naming file:line:col and the allowed values.
-#include "gui/view_preset.h"
+#include "preset/view_preset.h"
 
 #include <filesystem>
 #include <fstream>
@@ -10,7 +10,7 @@
 
 #include "test_support.h"
 
-namespace ll::gui {
+namespace ll {
 namespace {
 
 namespace fs = std::filesystem;
@@ -148,4 +148,4 @@ TEST(ViewPreset, EveryBundledPresetLoadsAndNamesAnExistingScene) {
 }
 
 }  // namespace
-}  // namespace ll::gui
+}  // namespace ll

@@ -1,4 +1,4 @@
-#include "gui/view_preset.h"
+#include "preset/view_preset.h"
 
 #include <filesystem>
 #include <fstream>
@@ -12,7 +12,7 @@
 #include "scene/json_document.h"
 #include "scene/scene_loader.h"
 
-namespace ll::gui {
+namespace ll {
 
 namespace fs = std::filesystem;
 
@@ -110,11 +110,12 @@ const char* compareModeName(CompareMode mode) {
 }
 
 ViewPreset parsePreset(const std::string& text, const std::string& file,
-                       const std::string& baseDir) {
+                       const std::string& baseDir, bool embedded) {
   const JsonDocument doc(text, file);
   const JsonNode root(doc, doc.root(), "", "preset");
   root.requireObject();
-  if (!root.has("lightlab_preset") || root.json()["lightlab_preset"] != kFormatVersion)
+  const bool tagged = root.has("lightlab_preset");
+  if ((!embedded || tagged) && (!tagged || root.json()["lightlab_preset"] != kFormatVersion))
     root.fail("not a LightLab view preset: it needs \"lightlab_preset\": " +
               std::to_string(kFormatVersion) +
               " (is this a scene? open scenes with `lightlab gui SCENE`)");
@@ -122,6 +123,7 @@ ViewPreset parsePreset(const std::string& text, const std::string& file,
                   "pane_count", "compare", "ui_scale", "exposure", "structure", "inspect"});
 
   ViewPreset p;
+  if (root.has("description")) p.description = root.string("description");
   const std::string scene = root.string("scene");
   const fs::path scenePath(scene);
   p.scene =
@@ -190,6 +192,7 @@ nlohmann::json presetToJson(const ViewPreset& p, const std::string& baseDir) {
   using nlohmann::json;
   json j;
   j["lightlab_preset"] = kFormatVersion;
+  if (!p.description.empty()) j["description"] = p.description;
   std::string scene = p.scene;
   if (!scene.empty()) {  // relative to the preset's folder, so presets move with the tree
     const fs::path base =
@@ -240,4 +243,4 @@ void savePreset(const ViewPreset& preset, const std::string& path) {
   out << presetToJson(preset, fs::path(path).parent_path().string()).dump(2) << "\n";
 }
 
-}  // namespace ll::gui
+}  // namespace ll

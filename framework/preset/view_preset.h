@@ -14,7 +14,7 @@
 #include "metrics/image_metrics.h"
 #include "scene/camera.h"
 
-namespace ll::gui {
+namespace ll {
 
 constexpr int kMaxPanes = 4;
 
@@ -42,6 +42,7 @@ struct CompareSetup {
 };
 
 struct ViewPreset {
+  std::string description;       // free text: what the view shows (slide figures' captions)
   std::string scene;             // scene path; relative paths resolve against the preset's folder
   std::optional<Camera> camera;  // absent = the scene's own camera
   int width = 0, height = 0;     // render size in pixels; 0 = the scene camera's
@@ -61,11 +62,13 @@ struct ViewPreset {
 // file:line:col and the allowed values. Relative scene paths are made
 // relative to the current directory (resolved against the preset's folder).
 ViewPreset loadPreset(const std::string& path);
+// `embedded`: the text is a preset block inside a slide deck, where the
+// "lightlab_preset" tag may be left out (the block's fence says what it is).
 ViewPreset parsePreset(const std::string& text, const std::string& file,
-                       const std::string& baseDir);
+                       const std::string& baseDir, bool embedded = false);
 
 // Writes `preset` as JSON; the scene path is stored relative to the preset's folder.
 void savePreset(const ViewPreset& preset, const std::string& path);
 nlohmann::json presetToJson(const ViewPreset& preset, const std::string& baseDir);
 
-}  // namespace ll::gui
+}  // namespace ll

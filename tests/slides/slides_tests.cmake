@@ -1,0 +1,6 @@
+# Slide decks end to end: `lightlab slides build` of every deck, each page
+# checked for every figure its Markdown names (the unit tests render every
+# preset too: Slides/SlideDeck.*; bad decks: cli.error.slides_*).
+add_test(NAME slides.build_all_decks_every_figure_embedded
+         COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/slides_build_test.sh $<TARGET_FILE:lightlab> ${CMAKE_CURRENT_BINARY_DIR}/slides_out)
+set_tests_properties(slides.build_all_decks_every_figure_embedded PROPERTIES TIMEOUT 600)
