@@ -2,6 +2,8 @@
 // accelerator of the registry built over it, and double-precision references.
 #pragma once
 
+#include "test_support.h"
+
 #include <memory>
 #include <string>
 #include <vector>
@@ -60,13 +62,9 @@ inline Geometry fan(const Vec3& centre, const std::vector<Vec3>& rim) {
   return g;
 }
 
+// A ray with every field given (test_support.h's makeRay under a short name).
 inline Ray ray(Vec3 origin, Vec3 dir, float tmin = 0.0f, float tmax = kInfinity) {
-  Ray r;
-  r.origin = origin;
-  r.dir = dir;
-  r.tmin = tmin;
-  r.tmax = tmax;
-  return r;
+  return testing_support::makeRay(origin, dir, tmin, tmax);
 }
 
 }  // namespace ll::numerics
