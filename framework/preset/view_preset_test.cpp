@@ -32,6 +32,14 @@ TEST(ViewPreset, MinimalPresetGetsDefaultsAndFourPanes) {
   EXPECT_EQ(p.compare.mode, CompareMode::SideBySide);
 }
 
+TEST(ViewPreset, EmbeddedPresetsMayLeaveOutTheTag) {
+  const std::string text = R"({"scene": "s.json", "panes": [{"technique": "raycast"}]})";
+  EXPECT_EQ(parsePreset(text, "deck.md", "/slides", true).scene, "/slides/s.json");
+  EXPECT_TRUE(contains(errorOf([&] { parse(text); }), "not a LightLab view preset"));
+  EXPECT_TRUE(contains(errorOf([] { parsePreset(R"({"lightlab_preset": 2, "scene": "s.json", "panes": []})", "d.md", "", true); }),
+                       "needs \"lightlab_preset\": 1"));
+}
+
 TEST(ViewPreset, SaveThenLoadGivesTheSameView) {
   const fs::path dir = fs::temp_directory_path() / "lightlab_preset_test";
   fs::create_directories(dir / "scenes");
@@ -62,6 +70,7 @@ TEST(ViewPreset, SaveThenLoadGivesTheSameView) {
   p.exposure = -1.0f;
   p.inspectPane = 1;
   p.inspectPixel = Vec2(12.5f, 7.5f);
+  p.description = "what it shows";
   const std::string file = (dir / "view.json").string();
   savePreset(p, file);
   EXPECT_TRUE(
@@ -73,6 +82,7 @@ TEST(ViewPreset, SaveThenLoadGivesTheSameView) {
   EXPECT_EQ(q.camera->eye, c.eye);
   EXPECT_EQ(q.camera->target, c.target);
   EXPECT_EQ(q.camera->fovYDeg, c.fovYDeg);
+  EXPECT_EQ(q.description, "what it shows");
   EXPECT_EQ(q.width, 320);
   EXPECT_EQ(q.height, 200);
   EXPECT_EQ(q.paneCount, 4);
