@@ -354,11 +354,12 @@ void refreshPanes(AppState& app) {
     pane.encodedExposure = app.exposure;
     bg.post("encode " + std::to_string(i),
             [image = pane.shown.image, mail = pane.display, e = app.exposure,
-             cost = pane.shown.view != PaneView::Image] {
-              if (!cost) return mail->put(encodeForDisplay(*image, e));
+             cost = pane.shown.view != PaneView::Image, version = pane.shown.version] {
               float scale = 0.0f;
-              DisplayImage d = encodeForDisplay(costHeatmap(*image, 0.0f, &scale), 0.0f);
+              DisplayImage d = cost ? encodeForDisplay(costHeatmap(*image, 0.0f, &scale), 0.0f)
+                                    : encodeForDisplay(*image, e);
               d.legendMax = scale;
+              d.version = version;
               mail->put(std::move(d));
             });
   }

@@ -14,6 +14,7 @@ struct DisplayImage {
   std::vector<uint8_t> rgba;  // row-major, top row first, alpha 255
   float legendMax =
       0.0f;  // a heatmap: the value its brightest colour stands for; 0 = a plain image
+  uint64_t version = 0;  // the pane image's version these bytes show (0: not a pane image)
 };
 
 // linear * 2^exposureStops, clamped to [0,1], sRGB-encoded; NaN/Inf -> 0.

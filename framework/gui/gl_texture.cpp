@@ -23,6 +23,7 @@ void GlTexture::upload(const DisplayImage& image) {
   width_ = image.width;
   height_ = image.height;
   legendMax_ = image.legendMax;
+  version_ = image.version;
 }
 
 }  // namespace ll::gui

@@ -20,6 +20,7 @@ class GlTexture {
   int width() const { return width_; }
   int height() const { return height_; }
   float legendMax() const { return legendMax_; }  // of the DisplayImage last uploaded
+  uint64_t version() const { return version_; }    // of the DisplayImage last uploaded
   // For ImGui::Image / ImDrawList::AddImage.
   void* imguiId() const { return reinterpret_cast<void*>(static_cast<intptr_t>(id_)); }
 
@@ -27,6 +28,7 @@ class GlTexture {
   unsigned id_ = 0;
   int width_ = 0, height_ = 0;
   float legendMax_ = 0.0f;
+  uint64_t version_ = 0;
 };
 
 }  // namespace ll::gui

@@ -53,6 +53,9 @@ std::string saveScreenshotSidecar(const AppState& app, const std::string& path, 
             {"total_passes", p.shown.totalPasses},
             {"starts", p.shown.starts},
             {"image_version", p.shown.version},
+            // The version the pixels on screen show: behind image_version until the
+            // background worker's display bytes are uploaded.
+            {"on_screen_version", p.texture.version()},
             {"rect", rect(app.paneRects[static_cast<size_t>(i)])},
             {"missing_tasks", p.shown.missingTasks},
             {"error", p.shown.error},

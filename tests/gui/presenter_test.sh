@@ -29,28 +29,7 @@ gui=$!
 trap 'kill $gui 2>/dev/null || true' EXIT
 xdotool search --sync --name LightLab >/dev/null
 
-fail() { echo "FAIL: $*"; kill -0 $gui 2>/dev/null || { echo "the GUI died:"; cat gui.log; }; exit 1; }
-q() { python3 -c "import json,sys; j=json.load(open('$1')); print($2)"; }  # q FILE EXPR
-shot() {  # shot NAME: F12, wait for the PNG and its sidecar (30 s)
-  rm -f lightlab_*.png lightlab_*.json
-  kill -0 $gui 2>/dev/null || fail "the GUI died before $1"
-  xdotool mousemove 5 5 key F12
-  for _ in $(seq 300); do ls lightlab_*.json >/dev/null 2>&1 && break; sleep 0.1; done
-  ls lightlab_*.json >/dev/null 2>&1 || fail "$1: no screenshot after F12"
-  sleep 0.2
-  mv lightlab_*.png "$1.png" && mv lightlab_*.json "$1.json"
-}
-until_shot() {  # until_shot NAME PYTHON-CONDITION: screenshots until the condition holds (120 s)
-  local end=$((SECONDS + 120))
-  while :; do
-    shot "$1"
-    [ "$(q "$1.json" "$2")" = True ] && return 0
-    [ $SECONDS -lt $end ] || fail "$1: never true: $2 (slides: $(q "$1.json" "j.get('slides')"))"
-    sleep 0.3
-  done
-}
-key() { xdotool mousemove 5 5 key "$1"; }
-done_both="all(p['phase'] == 'done' and p['passes'] == p['total_passes'] for p in j['panes'][:2])"
+source "$HERE/xdotool_helpers.sh"
 slide_is() { echo "j['slides']['index'] == $1 and j['slides']['count'] == 3"; }
 
 # 1. Slide 1 on opening: its preset, both panes finished; pane A is the 16-sample render.

@@ -20,26 +20,7 @@ gui=$!
 trap 'kill $gui 2>/dev/null || true' EXIT
 xdotool search --sync --name LightLab >/dev/null
 
-fail() { echo "FAIL: $*"; kill -0 $gui 2>/dev/null || { echo "the GUI died:"; cat gui.log; }; exit 1; }
-q() { python3 -c "import json,sys; j=json.load(open('$1')); print($2)"; }  # q FILE EXPR
-shot() {  # shot NAME: F12, wait for the PNG and its sidecar (30 s)
-  rm -f lightlab_*.png lightlab_*.json
-  kill -0 $gui 2>/dev/null || fail "the GUI died before $1"
-  xdotool mousemove 5 5 key F12
-  for _ in $(seq 300); do ls lightlab_*.json >/dev/null 2>&1 && break; sleep 0.1; done
-  ls lightlab_*.json >/dev/null 2>&1 || fail "$1: no screenshot after F12"
-  sleep 0.2
-  mv lightlab_*.png "$1.png" && mv lightlab_*.json "$1.json"
-}
-until_shot() {  # until_shot NAME PYTHON-CONDITION: screenshots until the condition holds (90 s)
-  local end=$((SECONDS + 90))
-  while :; do
-    shot "$1"
-    [ "$(q "$1.json" "$2")" = True ] && return 0
-    [ $SECONDS -lt $end ] || fail "$1: never true: $2"
-    sleep 0.3
-  done
-}
+source "$HERE/xdotool_helpers.sh"
 # reveal NAME WIDGET [BOX]: screenshots until WIDGET lies wholly inside BOX (a
 # recorded window: the side panel, or an open combo's list), turning the mouse
 # wheel over BOX to scroll it there, as a user would.
@@ -71,7 +52,6 @@ drag() {  # drag X0 Y0 X1 Y1 in small steps, as a hand would
   xdotool sleep 0.1 mouseup 1
 }
 field() { q "$1.json" "[p['$2'] for p in j['panes'][:2]]"; }  # field NAME KEY: panes A and B
-done_both="all(p['phase'] == 'done' and p['passes'] == p['total_passes'] for p in j['panes'][:2])"
 
 # 1. The GUI opens on the default scene, both panes ray casting; both finish.
 until_shot s1 "j['scene'].endswith('/data/scenes/cornell_box.json') and $done_both"
