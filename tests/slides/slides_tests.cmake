@@ -11,3 +11,10 @@ if(NODE_PROGRAM)
            COMMAND bash -c "${NODE_PROGRAM} ${CMAKE_CURRENT_LIST_DIR}/katex_check.js ${LIGHTLAB_KATEX_DIR}/katex.js ${CMAKE_CURRENT_BINARY_DIR}/slides_out/*.html")
   set_tests_properties(slides.every_equation_typesets PROPERTIES DEPENDS slides.build_all_decks_every_figure_embedded)
 endif()
+# Where Chromium is installed: the pages in a real browser typeset with their own inlined KaTeX.
+find_program(CHROMIUM_PROGRAM NAMES chromium chromium-browser)
+if(CHROMIUM_PROGRAM AND Python3_FOUND)
+  add_test(NAME slides.pages_typeset_in_a_browser
+           COMMAND bash -c "bash ${CMAKE_CURRENT_LIST_DIR}/browser_check.sh ${CHROMIUM_PROGRAM} ${CMAKE_CURRENT_BINARY_DIR}/slides_out/*.html")
+  set_tests_properties(slides.pages_typeset_in_a_browser PROPERTIES DEPENDS slides.build_all_decks_every_figure_embedded TIMEOUT 600)
+endif()
