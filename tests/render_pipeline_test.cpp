@@ -337,7 +337,7 @@ TEST(SceneSetup, SetAssignmentsAreValidatedBeforeLoading) {
   EXPECT_TRUE(contains(errorOf([&] { cli::setUpScene(missing, "raycast", "none", {"light_samples=0"}); }),
                        "parameter 'light_samples' = 0 is out of range [1, 1024]"));
   EXPECT_TRUE(contains(errorOf([&] { cli::setUpScene(missing, "raycast", "none", {"intersection=gpu"}); }),
-                       "unknown value 'gpu' (one of: student, framework)"));
+                       "unknown value 'gpu' (one of: auto, student, framework)"));
   EXPECT_EQ(errorOf([&] { cli::setUpScene(missing, "raycast", "none", {"light_samples"}); }),
             "--set expects name=value, got 'light_samples'");
   // With valid names and values the scene itself is the error.
@@ -372,7 +372,7 @@ TEST(SceneSetup, RoutesSetToTheDeclaringModule) {
   // Defaults where nothing was set.
   const cli::SceneSetup d = cli::setUpScene(kScenes + "tests/shadow_quad.json", "raycast", "none", {});
   EXPECT_EQ(d.techniqueParams.getInt("light_samples"), 16);
-  EXPECT_EQ(d.techniqueParams.getChoice("intersection"), "student");
+  EXPECT_EQ(d.techniqueParams.getChoice("intersection"), "auto");
 }
 
 TEST(Registry, KnowsTheBuiltInModules) {

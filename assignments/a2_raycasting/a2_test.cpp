@@ -16,6 +16,7 @@
 
 #include <gtest/gtest.h>
 
+#include "render_support.h"
 #include "test_support.h"
 #include <tbb/global_control.h>
 #include <tbb/task_arena.h>
@@ -874,6 +875,27 @@ TEST_P(A2_RaycastScene, RayCountsMatchTheScene) {
   EXPECT_GT(shadow, camera / 4);
   EXPECT_LE(shadow, camera);
   EXPECT_EQ(q.stats.work.totalRays(), camera + shadow);
+}
+
+// intersection=auto (the default): your tests over every primitive with -a none, the chosen
+// accelerator's otherwise (an accelerator picked in the GUI or with -a is never silently ignored).
+TEST(A2_Raycast, AutoIntersectionUsesTheChosenAccelerator) {
+  using testing_support::renderWith;
+  const Scene scene = loadScene(std::string(LIGHTLAB_DATA_DIR) + "/scenes/bunny.json");
+  const RenderSettings s = testing_support::renderSettings(16, 16);
+  const uint64_t prims = scene.geometry.primitiveCount();
+  const auto run = [&](const std::string& accel, const std::string& mode) {
+    return renderWith(scene, "raycast", accel, {{"intersection", mode}}, s).stats.work;
+  };
+  const WorkCounters none = run("none", "auto"), bvh = run("bvh", "auto"), forced = run("bvh", "student");
+  const auto camera = [](const WorkCounters& w) { return w.rays[static_cast<size_t>(RayKind::Camera)]; };
+  // Brute force tests every primitive for each camera ray (shadow rays may stop at the first hit).
+  EXPECT_GE(none.query.primitivesTested, prims * camera(none)) << "-a none: brute force";
+  EXPECT_EQ(none.query.nodesVisited, 0u);
+  EXPECT_GT(bvh.query.nodesVisited, 0u) << "-a bvh: the BVH answers the queries";
+  EXPECT_LT(bvh.query.primitivesTested, prims * camera(bvh) / 10);
+  EXPECT_GE(forced.query.primitivesTested, prims * camera(forced)) << "student: brute force with any -a";
+  EXPECT_EQ(forced.query.nodesVisited, 0u);
 }
 
 // Test names: A2/A2_RaycastScene.<Test>/framework and .../student.

@@ -54,6 +54,8 @@ class Accelerator {
   // Whether anything is hit with ray.tmin < t < ray.tmax (may stop at the first).
   virtual bool occluded(const Ray& ray, QueryCounters& counters) const = 0;
   virtual AcceleratorStats stats() const = 0;
+  // True for brute force (`none`), which has no structure: every query tests every primitive.
+  virtual bool testsEveryPrimitive() const { return false; }
   // The nodes at `depth` (root = 0), plus leaves that end above it, for the
   // GUI's structure overlay. Default: nothing to draw (brute force, Embree).
   virtual std::vector<NodeShape> nodesAtDepth(int depth) const {

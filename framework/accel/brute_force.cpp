@@ -34,6 +34,7 @@ class BruteForce final : public Accelerator {
   }
 
   AcceleratorStats stats() const override { return {}; }
+  bool testsEveryPrimitive() const override { return true; }
 
  private:
   const Geometry* geometry_ = nullptr;

@@ -33,7 +33,7 @@ lightlab_error_test(out_of_range "^lightlab: error: technique 'raycast' paramete
                     render ${SCENES}/cornell_box.json --set light_samples=0 -o ${OUT}/out_of_range.png)
 lightlab_error_test(unknown_parameter "has no parameter 'samples' \\(parameters: light_samples"
                     render ${SCENES}/cornell_box.json --set samples=4 -o ${OUT}/unknown_parameter.png)
-lightlab_error_test(bad_choice "unknown value 'gpu' \\(one of: student, framework\\)"
+lightlab_error_test(bad_choice "unknown value 'gpu' \\(one of: auto, student, framework\\)"
                     render ${SCENES}/cornell_box.json --set intersection=gpu -o ${OUT}/bad_choice.png)
 lightlab_error_test(bad_extension "unknown image extension '\\.bmp' \\(allowed: \\.png, \\.jpg, \\.hdr, \\.pfm\\)"
                     render ${SCENES}/tests/sphere_point_light.json -o ${OUT}/bad_extension.bmp)
