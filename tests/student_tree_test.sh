@@ -26,7 +26,7 @@ cat "$work/stderr.txt"
 for task in A2.1 A2.4 A2.5; do
   grep -q "$task not implemented" "$work/stderr.txt" || { echo "FAIL: $task is not reported as missing"; exit 1; }
 done
-# A2.2/A2.3 are used by intersection=student (the default) on a scene with spheres and triangles.
+# A2.2/A2.3 are used by intersection=auto (the default) with -a none (the default) on a scene with spheres and triangles.
 "$build/lightlab" --quiet render "$work/tree/data/scenes/tests/two_spheres_materials.json" -o "$work/out2.png" \
   2>"$work/stderr2.txt"
 for task in A2.2 A2.3; do
