@@ -880,9 +880,9 @@ TEST_P(A2_RaycastScene, RayCountsMatchTheScene) {
 // intersection=auto (the default): your tests over every primitive with -a none, the chosen
 // accelerator's otherwise (an accelerator picked in the GUI or with -a is never silently ignored).
 TEST(A2_Raycast, AutoIntersectionUsesTheChosenAccelerator) {
-  using testing_support::renderWith;
+  using testing_support::renderSettings, testing_support::renderWith;
   const Scene scene = loadScene(std::string(LIGHTLAB_DATA_DIR) + "/scenes/bunny.json");
-  const RenderSettings s = testing_support::renderSettings(16, 16);
+  const RenderSettings s = renderSettings(16, 16);
   const uint64_t prims = scene.geometry.primitiveCount();
   const auto run = [&](const std::string& accel, const std::string& mode) {
     return renderWith(scene, "raycast", accel, {{"intersection", mode}}, s).stats.work;

@@ -26,8 +26,7 @@ class Raycast final : public PixelTechnique {
     camera_ = renderCamera(ctx.scene, ctx.settings);
     lightSamples_ = ctx.params.getInt("light_samples");
     student_.reset();
-    // auto: your tests when there is no accelerator (-a none, the default), else the accelerator's
-    // (before, -a bvh with raycast was silently brute force: 25 s for a 64x64 Cornell + 59k bunny).
+    // auto: your tests when there is no accelerator (-a none, the default), else the accelerator's.
     const std::string& choice = ctx.params.getChoice("intersection");
     if (choice == "student" || (choice == "auto" && ctx.accel.testsEveryPrimitive())) {
       student_ = a2::makeStudentIntersector();
