@@ -58,6 +58,8 @@ bool occludedBvh(const FlatBvh& bvh, const Ray& ray, QueryCounters& counters);
 // children, the whole interval). Stop once the closest hit lies inside the
 // current cell (allow r.tSlack for rounding); a hit beyond the cell's end
 // may still lose to the next cell. Count nodes and primitives as in A4.2.
+// Optional, for speed: skip children flagged empty (KdNode::belowEmpty(),
+// aboveEmpty()), and test each primitive once per ray (Mailbox, mailbox.h).
 bool intersectKdTree(const KdTree& tree, const Ray& ray, Hit& hit, QueryCounters& counters);
 
 // A4.3 (any hit): whether anything is hit with ray.tmin < t < ray.tmax.
@@ -67,7 +69,7 @@ bool occludedKdTree(const KdTree& tree, const Ray& ray, QueryCounters& counters)
 // find which of the eight children (octreeChildCell()) the ray enters and
 // where, visit them nearest first (the others on a stack of
 // kOctreeStackSize entries, with their cells), and stop once the closest hit
-// lies inside the current cell.
+// lies inside the current cell. Optional: a Mailbox, as in A4.3.
 bool intersectOctree(const Octree& tree, const Ray& ray, Hit& hit, QueryCounters& counters);
 
 // A4.4 (any hit): whether anything is hit with ray.tmin < t < ray.tmax.

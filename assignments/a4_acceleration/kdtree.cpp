@@ -81,7 +81,8 @@ class Builder {
     depth_ = std::max(depth_, depth);
     const size_t n = prims.size();
     const double area = halfArea(cell);
-    if (n <= static_cast<size_t>(s_.maxLeaf) || splits >= maxDepth_ || depth >= kKdMaxDepth)
+    if (n <= static_cast<size_t>(s_.maxLeaf) || splits >= maxDepth_ || depth >= kKdMaxDepth ||
+        tree_.nodes.size() + 2 > kKdMaxNodes)
       return makeLeaf(index, prims, area);
     const Plane plane = bestPlane(prims, cell);
     const float leafCost = s_.intersectionCost * static_cast<float>(n);
@@ -123,8 +124,10 @@ class Builder {
     std::vector<KdPrim>().swap(prims);  // free before recursing
     sah_ += static_cast<double>(s_.traversalCost) * area;
     const int nextSplits = splits + (below.empty() || above.empty() ? 0 : 1);
+    const bool belowEmpty = below.empty(), aboveEmpty = above.empty();
     build(below, cellBelow, depth + 1, nextSplits, badRefines);
-    tree_.nodes[index] = KdNode::interior(a, split, static_cast<uint32_t>(tree_.nodes.size()));
+    const auto aboveIndex = static_cast<uint32_t>(tree_.nodes.size());
+    tree_.nodes[index] = KdNode::interior(a, split, aboveIndex, belowEmpty, aboveEmpty);
     build(above, cellAbove, depth + 1, nextSplits, badRefines);
   }
 

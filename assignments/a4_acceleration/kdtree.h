@@ -29,23 +29,32 @@ struct KdSettings {
 // hold this many entries.
 constexpr int kKdMaxDepth = 64;
 constexpr int kKdStackSize = kKdMaxDepth;
+// Most nodes a tree may have (aboveChild has 28 bits); the build makes leaves beyond.
+constexpr size_t kKdMaxNodes = size_t{1} << 28;
 
 // One node, 8 bytes. Interior: cut along axis() at split(); the child below
 // the plane (coordinate <= split) is the next node, the child above it node
-// aboveChild(). Leaf: primitives in slots [first(), first() + count()).
-// Cells are closed boxes: both children include the plane.
+// aboveChild(); belowEmpty() / aboveEmpty() say that child is a leaf without
+// primitives, so a traversal may skip it without loading it (it need not:
+// the empty leaves are there). Leaf: primitives in slots [first(), first() +
+// count()). Cells are closed boxes: both children include the plane.
 struct KdNode {
   uint32_t word = 0;  // interior: the split plane's bits; leaf: first slot
-  uint32_t bits = 0;  // low 2 bits: axis 0-2, or 3 for a leaf; the rest: aboveChild / count
+  uint32_t bits = 0;  // low 2 bits: axis 0-2, or 3 for a leaf. Interior: bit 2 below empty, bit 3 above
+                      // empty, the rest aboveChild; leaf: the rest count
 
-  static KdNode interior(int axis, float split, uint32_t aboveChild) {
-    return {std::bit_cast<uint32_t>(split), (aboveChild << 2) | static_cast<uint32_t>(axis)};
+  static KdNode interior(int axis, float split, uint32_t aboveChild, bool belowEmpty = false,
+                         bool aboveEmpty = false) {
+    return {std::bit_cast<uint32_t>(split), (aboveChild << 4) | (aboveEmpty ? 8u : 0u) | (belowEmpty ? 4u : 0u) |
+                                                static_cast<uint32_t>(axis)};
   }
   static KdNode leafNode(uint32_t first, uint32_t count) { return {first, (count << 2) | 3u}; }
   bool isLeaf() const { return (bits & 3u) == 3u; }
   int axis() const { return static_cast<int>(bits & 3u); }
   float split() const { return std::bit_cast<float>(word); }
-  uint32_t aboveChild() const { return bits >> 2; }
+  uint32_t aboveChild() const { return bits >> 4; }
+  bool belowEmpty() const { return (bits & 4u) != 0; }
+  bool aboveEmpty() const { return (bits & 8u) != 0; }
   uint32_t first() const { return word; }
   uint32_t count() const { return bits >> 2; }
 };

@@ -1,7 +1,7 @@
 // A4.3 KD-tree traversal: closest hit (front to back, early exit once the
 // closest hit lies in the current cell) and any hit.
 #include "a4_tasks.h"
-#include "bvh_ray_tests.h"
+#include "mailbox.h"
 #include "render/student_task.h"
 
 namespace ll::a4 {
@@ -32,45 +32,57 @@ bool traverseKd(const KdTree& tree, const TraversalRay& r, Hit& hit, QueryCounte
   uint32_t current = 0;
   uint64_t visited = 0, tested = 0;
   bool found = false;
+  Mailbox mailbox;  // a primitive in several cells along the ray is tested once
+  // Indexed by axis as plain arrays: glm's operator[] is a switch, a branch per node.
+  const float origin[3] = {r.ray.origin.x, r.ray.origin.y, r.ray.origin.z};
+  const float dir[3] = {r.ray.dir.x, r.ray.dir.y, r.ray.dir.z};
+  const float invDir[3] = {r.invDir.x, r.invDir.y, r.invDir.z};
   for (;;) {
     ++visited;
     const KdNode node = nodes[current];
     if (!node.isLeaf()) {
       const int a = node.axis();
-      const float split = node.split(), o = r.ray.origin[a], d = r.ray.dir[a];
+      const float split = node.split(), o = origin[a], d = dir[a];
       // The ray crosses the plane at tSplit: before it, it is in `first` (the
       // origin's side; from an origin on the plane, the side it goes into, as
       // tSplit = 0), after it in `second`. Axis-parallel: +-infinity (never
-      // crosses), or NaN when it lies in the plane.
-      const float tSplit = (split - o) * r.invDir[a];
+      // crosses), or NaN when it lies in the plane. A child without
+      // primitives is never entered (its flag saves loading it).
+      const float tSplit = (split - o) * invDir[a];
       const bool belowFirst = o < split || (o == split && d <= 0.0f);
       const uint32_t first = belowFirst ? current + 1 : node.aboveChild();
       const uint32_t second = belowFirst ? node.aboveChild() : current + 1;
+      const bool firstEmpty = belowFirst ? node.belowEmpty() : node.aboveEmpty();
+      const bool secondEmpty = belowFirst ? node.aboveEmpty() : node.belowEmpty();
       if (tSplit <= 0.0f || tSplit > tFar + r.tSlack) {  // only the origin's side (the sign is exact)
-        current = first;
+        if (!firstEmpty) {
+          current = first;
+          continue;
+        }
       } else if (tSplit < tNear - r.tSlack) {  // already past the plane when entering the cell
-        current = second;
+        if (!secondEmpty) {
+          current = second;
+          continue;
+        }
       } else {  // both (also NaN: the ray lies in the plane, which belongs to both cells)
         const float secondNear = tSplit > tNear ? tSplit : tNear;
-        stack[sp++] = {second, secondNear, tFar};
-        tFar = tSplit < tFar ? tSplit : tFar;
-        current = first;
-      }
-      continue;
-    }
-    const uint32_t end = node.first() + node.count();
-    tested += node.count();
-    for (uint32_t s = node.first(); s < end; ++s) {
-      if constexpr (AnyHit) {
-        if (anyPrimitiveHit(tree, s, r)) {
-          found = true;
-          break;
+        if (!firstEmpty) {
+          if (!secondEmpty) stack[sp++] = {second, secondNear, tFar};
+          tFar = tSplit < tFar ? tSplit : tFar;
+          current = first;
+          continue;
         }
-      } else if (closerPrimitiveHit(tree, s, r, hit)) {
-        found = true;
+        if (!secondEmpty) {
+          tNear = secondNear;
+          current = second;
+          continue;
+        }
       }
+      // Every cell the ray enters here is empty: on to the pending ones.
+    } else {
+      found |= testLeafOnce<AnyHit>(tree, node.first(), node.first() + node.count(), r, hit, mailbox, tested);
+      if (AnyHit && found) break;
     }
-    if (AnyHit && found) break;
     // Early exit: the pending cells start where this one ends (tFar) or
     // later, so once the closest hit lies inside this cell (hit.t + slack <
     // tFar) all of them are dropped here. A hit beyond this cell's end (the

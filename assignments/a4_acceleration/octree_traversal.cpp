@@ -1,7 +1,7 @@
 // A4.4 Octree traversal: closest hit (children in the order the ray enters
 // them, early exit once the closest hit lies in the current cell) and any hit.
 #include "a4_tasks.h"
-#include "bvh_ray_tests.h"
+#include "mailbox.h"
 #include "render/student_task.h"
 
 namespace ll::a4 {
@@ -27,6 +27,7 @@ bool traverseOctree(const Octree& tree, const TraversalRay& r, Hit& hit, QueryCo
   Vec3 lo = tree.bounds.min, hi = tree.bounds.max;
   uint64_t visited = 0, tested = 0;
   bool found = false;
+  Mailbox mailbox;  // a primitive in several cells along the ray is tested once
   const Vec3& o = r.ray.origin;
   for (;;) {
     ++visited;
@@ -83,18 +84,7 @@ bool traverseOctree(const Octree& tree, const TraversalRay& r, Hit& hit, QueryCo
         continue;
       }
     } else {
-      const uint32_t end = node.offset + node.count;
-      tested += node.count;
-      for (uint32_t s = node.offset; s < end; ++s) {
-        if constexpr (AnyHit) {
-          if (anyPrimitiveHit(tree, s, r)) {
-            found = true;
-            break;
-          }
-        } else if (closerPrimitiveHit(tree, s, r, hit)) {
-          found = true;
-        }
-      }
+      found |= testLeafOnce<AnyHit>(tree, node.offset, node.offset + node.count, r, hit, mailbox, tested);
       if (AnyHit && found) break;
     }
     // Early exit: the pending cells start where this one ends or later, so
