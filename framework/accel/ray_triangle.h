@@ -21,10 +21,11 @@ struct WatertightRay {
     kz = a.x > a.y ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2);
     kx = (kz + 1) % 3;
     ky = (kx + 1) % 3;
-    if (ray.dir[kz] < 0.0f) std::swap(kx, ky);  // keep the winding
-    sx = ray.dir[kx] / ray.dir[kz];
-    sy = ray.dir[ky] / ray.dir[kz];
-    sz = 1.0f / ray.dir[kz];
+    const float d[3] = {ray.dir.x, ray.dir.y, ray.dir.z};  // not glm's operator[], a switch (see below)
+    if (d[kz] < 0.0f) std::swap(kx, ky);  // keep the winding
+    sx = d[kx] / d[kz];
+    sy = d[ky] / d[kz];
+    sz = 1.0f / d[kz];
   }
 };
 
