@@ -123,8 +123,8 @@ class Builder {
     }
     std::vector<KdPrim>().swap(prims);  // free before recursing
     sah_ += static_cast<double>(s_.traversalCost) * area;
-    const int nextSplits = splits + (below.empty() || above.empty() ? 0 : 1);
     const bool belowEmpty = below.empty(), aboveEmpty = above.empty();
+    const int nextSplits = splits + (belowEmpty || aboveEmpty ? 0 : 1);
     build(below, cellBelow, depth + 1, nextSplits, badRefines);
     const auto aboveIndex = static_cast<uint32_t>(tree_.nodes.size());
     tree_.nodes[index] = KdNode::interior(a, split, aboveIndex, belowEmpty, aboveEmpty);

@@ -43,8 +43,7 @@ struct KdNode {
   uint32_t bits = 0;  // low 2 bits: axis 0-2, or 3 for a leaf. Interior: bit 2 below empty, bit 3 above
                       // empty, the rest aboveChild; leaf: the rest count
 
-  static KdNode interior(int axis, float split, uint32_t aboveChild, bool belowEmpty = false,
-                         bool aboveEmpty = false) {
+  static KdNode interior(int axis, float split, uint32_t aboveChild, bool belowEmpty, bool aboveEmpty) {
     return {std::bit_cast<uint32_t>(split), (aboveChild << 4) | (aboveEmpty ? 8u : 0u) | (belowEmpty ? 4u : 0u) |
                                                 static_cast<uint32_t>(axis)};
   }

@@ -33,10 +33,7 @@ bool traverseKd(const KdTree& tree, const TraversalRay& r, Hit& hit, QueryCounte
   uint64_t visited = 0, tested = 0;
   bool found = false;
   Mailbox mailbox;  // a primitive in several cells along the ray is tested once
-  // Indexed by axis as plain arrays: glm's operator[] is a switch, a branch per node.
-  const float origin[3] = {r.ray.origin.x, r.ray.origin.y, r.ray.origin.z};
-  const float dir[3] = {r.ray.dir.x, r.ray.dir.y, r.ray.dir.z};
-  const float invDir[3] = {r.invDir.x, r.invDir.y, r.invDir.z};
+  const auto origin = components(r.ray.origin), dir = components(r.ray.dir), invDir = components(r.invDir);
   for (;;) {
     ++visited;
     const KdNode node = nodes[current];

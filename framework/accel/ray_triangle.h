@@ -21,7 +21,7 @@ struct WatertightRay {
     kz = a.x > a.y ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2);
     kx = (kz + 1) % 3;
     ky = (kx + 1) % 3;
-    const float d[3] = {ray.dir.x, ray.dir.y, ray.dir.z};  // not glm's operator[], a switch (see below)
+    const auto d = components(ray.dir);
     if (d[kz] < 0.0f) std::swap(kx, ky);  // keep the winding
     sx = d[kx] / d[kz];
     sy = d[ky] / d[kz];
@@ -36,10 +36,7 @@ struct WatertightRay {
 // normal that does not exist; the scene loaders drop them as well.
 inline bool intersectTriangle(const WatertightRay& r, const Vec3& p0, const Vec3& p1, const Vec3& p2,
                               float tmin, float tmax, float& t, float& b1, float& b2) {
-  // Plain arrays, indexed by the ray's axes: glm's operator[] is a switch, which the compiler
-  // keeps as branches that mispredict whenever consecutive rays have other dominant axes.
-  const Vec3 av = p0 - r.origin, bv = p1 - r.origin, cv = p2 - r.origin;
-  const float a[3] = {av.x, av.y, av.z}, b[3] = {bv.x, bv.y, bv.z}, c[3] = {cv.x, cv.y, cv.z};
+  const auto a = components(p0 - r.origin), b = components(p1 - r.origin), c = components(p2 - r.origin);
   const float ax = a[r.kx] - r.sx * a[r.kz], ay = a[r.ky] - r.sy * a[r.kz];
   const float bx = b[r.kx] - r.sx * b[r.kz], by = b[r.ky] - r.sy * b[r.kz];
   const float cx = c[r.kx] - r.sx * c[r.kz], cy = c[r.ky] - r.sy * c[r.kz];

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -21,6 +22,10 @@ using Rgb = glm::vec3;  // linear RGB radiance or reflectance, never sRGB-encode
 constexpr float kPi = 3.14159265358979323846f;
 constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
+// v's components as an array, for indexing by a run-time axis in hot loops:
+// glm's operator[] is a switch, which compiles to branches that mispredict
+// whenever consecutive rays pick other axes.
+inline std::array<float, 3> components(const Vec3& v) { return {v.x, v.y, v.z}; }
 inline float maxComponent(const Vec3& v) { return std::max(v.x, std::max(v.y, v.z)); }
 inline float minComponent(const Vec3& v) { return std::min(v.x, std::min(v.y, v.z)); }
 inline float luminance(const Rgb& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
