@@ -3,8 +3,10 @@
 // axis of the node's cell; primitives whose box reaches across the plane go
 // to both children, where a triangle's box shrinks to the box of the part of
 // the triangle inside the child's cell ("perfect splits", Havran; padded for
-// rounding). Written depth-first straight into 8-byte nodes; statistics
-// (nodes, depth, memory, SAH cost) on the way.
+// rounding). Nodes with at most maxLeaf primitives still take a plane that
+// cuts off empty space when that lowers the true SAH cost. Written
+// depth-first straight into 8-byte nodes; statistics (nodes, depth, memory,
+// SAH cost) on the way.
 #include "kdtree.h"
 
 #include <algorithm>
@@ -81,12 +83,15 @@ class Builder {
     depth_ = std::max(depth_, depth);
     const size_t n = prims.size();
     const double area = halfArea(cell);
-    if (n <= static_cast<size_t>(s_.maxLeaf) || splits >= maxDepth_ || depth >= kKdMaxDepth ||
-        tree_.nodes.size() + 2 > kKdMaxNodes)
+    if (n == 0 || splits >= maxDepth_ || depth >= kKdMaxDepth || tree_.nodes.size() + 2 > kKdMaxNodes)
       return makeLeaf(index, prims, area);
-    const Plane plane = bestPlane(prims, cell);
+    // A node with few primitives is a leaf unless a plane with nothing on one
+    // side lowers its SAH cost: so a wall lying in the cell's face gets a
+    // thin slab of its own, and rays crossing the rest of the cell skip it.
+    const bool few = n <= static_cast<size_t>(s_.maxLeaf);
+    const Plane plane = bestPlane(prims, cell, few);
     const float leafCost = s_.intersectionCost * static_cast<float>(n);
-    if (plane.axis < 0) return makeLeaf(index, prims, area);
+    if (plane.axis < 0 || (few && plane.cost >= leafCost)) return makeLeaf(index, prims, area);
     if (plane.cost >= leafCost) ++badRefines;  // PBRT: allow a few uphill splits to get out of local minima
     if ((plane.cost > 4.0f * leafCost && n < 16) || badRefines >= 3) return makeLeaf(index, prims, area);
 
@@ -161,7 +166,9 @@ class Builder {
 
   // The cheapest bin boundary over all three axes: counts of boxes starting
   // and ending in each bin give the primitives on each side in O(bins).
-  Plane bestPlane(const std::vector<KdPrim>& prims, const Bounds3& cell) const {
+  // emptyOnly: only planes with no primitive on one side, and their cost
+  // without the empty bonus (the true SAH cost, to compare with a leaf's).
+  Plane bestPlane(const std::vector<KdPrim>& prims, const Bounds3& cell, bool emptyOnly) const {
     Plane best;
     const int bins = std::clamp(s_.bins, 2, kMaxBins);
     const float n = static_cast<float>(prims.size());
@@ -191,7 +198,9 @@ class Builder {
         cb.max[a] = position;
         ca.min[a] = position;
         const float nB = static_cast<float>(nBelow), nA = n - static_cast<float>(nEnded);
-        const float bonus = (nBelow == 0 || nA == 0.0f) ? 1.0f - s_.emptyBonus : 1.0f;
+        const bool oneSided = nBelow == 0 || nA == 0.0f;
+        if (emptyOnly && !oneSided) continue;
+        const float bonus = oneSided && !emptyOnly ? 1.0f - s_.emptyBonus : 1.0f;
         const float cost =
             s_.traversalCost + bonus * s_.intersectionCost * invArea * (halfArea(cb) * nB + halfArea(ca) * nA);
         if (cost < best.cost) best = {a, position, cost};
@@ -209,7 +218,8 @@ class Builder {
         cb.max[a] = position;
         ca.min[a] = position;
         const float side = position == first ? halfArea(ca) : halfArea(cb);  // the side holding all n
-        const float cost = s_.traversalCost + (1.0f - s_.emptyBonus) * s_.intersectionCost * invArea * side * n;
+        const float bonus = emptyOnly ? 1.0f : 1.0f - s_.emptyBonus;
+        const float cost = s_.traversalCost + bonus * s_.intersectionCost * invArea * side * n;
         if (cost < best.cost) best = {a, position, cost};
       }
     }

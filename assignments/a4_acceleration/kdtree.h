@@ -18,7 +18,8 @@ namespace ll::a4 {
 
 struct KdSettings {
   int maxDepth = 0;  // most splits above a leaf, not counting empty-space cuts; 0 = 8 + 1.3 log2(n), PBRT's rule
-  int maxLeaf = 2;                // nodes with at most this many primitives become leaves
+  int maxLeaf = 2;                // nodes with at most this many primitives become leaves, unless
+                                  // cutting off empty space lowers their SAH cost
   float traversalCost = 1.0f;     // SAH: cost of one traversal step ...
   float intersectionCost = 1.5f;  // ... relative to one primitive test
   float emptyBonus = 0.5f;        // SAH: a split with an empty side costs (1 - emptyBonus) times as much

@@ -84,7 +84,9 @@ AcceleratorInfo kdtreeAccelerator() {
           "KD-tree (assignment 4): space cut by SAH planes, primitives across a plane on both sides, front-to-back "
           "traversal",
           {ParamDecl::integer("max_depth", 0, 0, a4::kKdMaxDepth, "deepest leaf; 0 = 8 + 1.3 log2(primitives)"),
-           ParamDecl::integer("max_leaf", 2, 1, 64, "nodes with at most this many primitives become leaves"),
+           ParamDecl::integer("max_leaf", 2, 1, 64,
+                              "nodes with at most this many primitives become leaves, unless an "
+                              "empty-space cut is cheaper"),
            ParamDecl::real("traversal_cost", 1.0, 0.01, 100.0, "SAH: cost of one traversal step"),
            ParamDecl::real("intersection_cost", 1.5, 0.01, 100.0, "SAH: cost of one primitive test"),
            ParamDecl::real("empty_bonus", 0.5, 0.0, 1.0,
