@@ -46,10 +46,11 @@ class NodePool {
  public:
   explicit NodePool(size_t primitives)
       : capacity_(2 * primitives), bytes_(std::make_unique_for_overwrite<std::byte[]>(capacity_ * sizeof(BuildNode))) {}
+  // A node over primitives [first, first + count) with box `bounds`, no children yet.
   // Precondition: slot < 2n - 1, and each slot is made once.
-  BuildNode* make(size_t slot) {
+  BuildNode* make(size_t slot, const Bounds3& bounds, size_t first, size_t count) {
     assert(slot < capacity_);
-    return new (bytes_.get() + slot * sizeof(BuildNode)) BuildNode();
+    return new (bytes_.get() + slot * sizeof(BuildNode)) BuildNode{bounds, nullptr, nullptr, first, count};
   }
 
  private:
@@ -62,7 +63,7 @@ BuildNode* buildNode(NodePool& pool, std::span<BuildPrim> all, size_t first, siz
   const std::span<BuildPrim> prims = all.subspan(first, count);
   Bounds3 bounds;
   for (const BuildPrim& p : prims) bounds.extend(p.bounds);
-  size_t k = 0;
+  size_t k = 0;  // left child's primitives; 0 or count: a leaf
   if (count >= 2 && depth >= kForcedHalvingDepth) {
     k = count / 2;
     std::nth_element(prims.begin(), prims.begin() + static_cast<std::ptrdiff_t>(k), prims.end(),
@@ -71,10 +72,7 @@ BuildNode* buildNode(NodePool& pool, std::span<BuildPrim> all, size_t first, siz
     k = splitPrimitives(prims, bounds, s);
   }
   const bool leaf = k == 0 || k >= count;
-  BuildNode* node = pool.make(leaf ? 2 * first : 2 * (first + k) - 1);
-  node->bounds = bounds;
-  node->first = first;
-  node->count = count;
+  BuildNode* node = pool.make(leaf ? 2 * first : 2 * (first + k) - 1, bounds, first, count);
   if (leaf) return node;
   auto buildLeft = [&] { node->left = buildNode(pool, all, first, k, s, depth + 1); };
   auto buildRight = [&] { node->right = buildNode(pool, all, first + k, count - k, s, depth + 1); };

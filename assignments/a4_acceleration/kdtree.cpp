@@ -170,6 +170,7 @@ class Builder {
   // without the empty bonus (the true SAH cost, to compare with a leaf's).
   Plane bestPlane(const std::vector<KdPrim>& prims, const Bounds3& cell, bool emptyOnly) const {
     Plane best;
+    const float emptySideFactor = emptyOnly ? 1.0f : 1.0f - s_.emptyBonus;  // cost factor of a one-sided plane
     const int bins = std::clamp(s_.bins, 2, kMaxBins);
     const float n = static_cast<float>(prims.size());
     const float invArea = 1.0f / halfArea(cell);
@@ -200,9 +201,8 @@ class Builder {
         const float nB = static_cast<float>(nBelow), nA = n - static_cast<float>(nEnded);
         const bool oneSided = nBelow == 0 || nA == 0.0f;
         if (emptyOnly && !oneSided) continue;
-        const float bonus = oneSided && !emptyOnly ? 1.0f - s_.emptyBonus : 1.0f;
         const float cost =
-            s_.traversalCost + bonus * s_.intersectionCost * invArea * (halfArea(cb) * nB + halfArea(ca) * nA);
+            s_.traversalCost + (oneSided ? emptySideFactor : 1.0f) * s_.intersectionCost * invArea * (halfArea(cb) * nB + halfArea(ca) * nA);
         if (cost < best.cost) best = {a, position, cost};
       }
       // Two more candidates: the faces of the primitives' box, which cut off
@@ -218,8 +218,7 @@ class Builder {
         cb.max[a] = position;
         ca.min[a] = position;
         const float side = position == first ? halfArea(ca) : halfArea(cb);  // the side holding all n
-        const float bonus = emptyOnly ? 1.0f : 1.0f - s_.emptyBonus;
-        const float cost = s_.traversalCost + bonus * s_.intersectionCost * invArea * side * n;
+        const float cost = s_.traversalCost + emptySideFactor * s_.intersectionCost * invArea * side * n;
         if (cost < best.cost) best = {a, position, cost};
       }
     }
