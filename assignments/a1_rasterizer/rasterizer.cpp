@@ -10,21 +10,6 @@
 
 namespace ll::a1 {
 
-double referenceEdgeFunction(Vec2 a, Vec2 b, Vec2 p) {
-  const double ax = a.x, ay = a.y;  // float -> double is exact, and so is every step below
-  const double bx = static_cast<double>(b.x) - ax, by = static_cast<double>(b.y) - ay;
-  const double px = static_cast<double>(p.x) - ax, py = static_cast<double>(p.y) - ay;
-  return bx * py - by * px;
-}
-
-bool referenceIsTopLeft(Vec2 a, Vec2 b) { return (a.y == b.y && b.x > a.x) || b.y < a.y; }
-
-bool referenceDepthTest(float z, float& stored) {
-  if (!(z < stored)) return false;
-  stored = z;
-  return true;
-}
-
 Varyings blend(const Varyings& a, const Varyings& b, const Varyings& c, float b0, float b1, float b2) {
   Varyings v;
   v.position = b0 * a.position + b1 * b.position + b2 * c.position;

@@ -58,10 +58,4 @@ uint64_t rasterize(const Shader& shader, const std::vector<DrawCall>& draws, con
 uint64_t rasterize(RasterWorkspace& workspace, const Shader& shader, const std::vector<DrawCall>& draws,
                    const RasterSettings& settings, FrameBuffer& fb, const std::atomic<bool>& cancel);
 
-// The framework's edge function, fill rule and depth test: the fallbacks of
-// the A1.2 and A1.3 stubs (the picture stays right; the pixels are striped).
-double referenceEdgeFunction(Vec2 a, Vec2 b, Vec2 p);
-bool referenceIsTopLeft(Vec2 a, Vec2 b);
-bool referenceDepthTest(float z, float& stored);
-
 }  // namespace ll::a1

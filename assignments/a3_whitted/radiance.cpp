@@ -25,11 +25,12 @@ Rgb radiance(const WhittedTracer& tracer, const Ray& ray, const PathState& path)
   }
   return s->absorption * l;  // Beer-Lambert along the way here
 #else
+  // Your A3.4 here (see its comment in a3_tasks.h), then delete the line below.
+  (void)tracer;
+  (void)ray;
+  (void)path;
   LIGHTLAB_TODO("A3.4", "the recursion (assignments/a3_whitted/radiance.cpp)");
-  // Stand-in: ray casting -- the first hit's own light, nothing reflected or transmitted.
-  if (path.depth > 0) return Rgb(0.0f);
-  const std::optional<Surface> s = tracer.intersect(ray, path);
-  return s ? tracer.emitted(*s) + tracer.local(*s) : tracer.background();
+  return Rgb(0.0f);
 #endif
 }
 

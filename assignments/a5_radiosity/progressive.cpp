@@ -18,36 +18,6 @@ double ProgressiveRadiosity::unshotFractionLocked() const {
   return emitted_ > 0.0 ? left / emitted_ : 0.0;
 }
 
-void ProgressiveRadiosity::advance(size_t shots, double tolerance) {
-  const std::lock_guard lock(mutex_);
-  if (unshotFractionLocked() <= tolerance) return;  // converged already (e.g. a render after a camera move)
-  while (shots_ < shots) {
-    // The largest unshot power shoots (Southwell); its row is computed now if it never shot before.
-    uint32_t shooter = 0;
-    float best = 0.0f;
-    for (uint32_t i = 0; i < unshot_.size(); ++i) {
-      const float power = maxComponent(unshot_[i]) * mesh_.patches[i].area;
-      if (power > best) {
-        best = power;
-        shooter = i;
-      }
-    }
-    if (!(best > 0.0f)) return;
-    if (computed_[shooter].empty()) computed_[shooter] = rows_.row(shooter);
-    const Rgb shot = unshot_[shooter];
-    const float area = mesh_.patches[shooter].area;
-    unshot_[shooter] = Rgb(0.0f);
-    for (const FormFactorEntry& e : computed_[shooter]) {
-      const Patch& receiver = mesh_.patches[e.j];
-      const Rgb received = receiver.reflectance * (e.f * area / receiver.area) * shot;  // rho_j F_ji B_i
-      b_[e.j] += received;
-      unshot_[e.j] += received;
-    }
-    ++shots_;
-    if ((shots_ & 63u) == 0 && unshotFractionLocked() <= tolerance) return;
-  }
-}
-
 std::vector<Rgb> ProgressiveRadiosity::displayed(double* unshotFraction) const {
   const std::lock_guard lock(mutex_);
   // The ambient term: the unshot radiosity spread evenly and reflected over and over.

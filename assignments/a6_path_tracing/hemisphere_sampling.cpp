@@ -14,10 +14,10 @@ Vec3 sampleCosineHemisphere(Vec2 u) {
   const float r = std::sqrt(u.x), phi = 2.0f * kPi * u.y;
   return {r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0f, 1.0f - u.x))};
 #else
+  // Your A6.1 here (see its comment in a6_tasks.h), then delete the line below.
+  (void)u;
   LIGHTLAB_TODO("A6.1", "cosine-weighted hemisphere sampling (assignments/a6_path_tracing/hemisphere_sampling.cpp)");
-  // Stand-in: uniform over the hemisphere (density 1 / 2 pi): correct, noisier.
-  const float z = u.x, r = std::sqrt(std::max(0.0f, 1.0f - z * z)), phi = 2.0f * kPi * u.y;
-  return {r * std::cos(phi), r * std::sin(phi), z};
+  return Vec3(0.0f, 0.0f, 1.0f);
 #endif
 }
 
@@ -25,8 +25,10 @@ float cosineHemispherePdf(float cosTheta) {
 #if LIGHTLAB_SOLUTION  // A6.1
   return cosTheta > 0.0f ? cosTheta / kPi : 0.0f;
 #else
+  // Your A6.1 here (see its comment in a6_tasks.h), then delete the line below.
+  (void)cosTheta;
   LIGHTLAB_TODO("A6.1", "cosine-weighted hemisphere sampling (assignments/a6_path_tracing/hemisphere_sampling.cpp)");
-  return cosTheta > 0.0f ? 1.0f / (2.0f * kPi) : 0.0f;  // the stand-in's uniform density
+  return 0.0f;
 #endif
 }
 

@@ -2,19 +2,25 @@
 // Improvements for Ray/Sphere Intersection", Ray Tracing Gems ch. 7): the
 // discriminant is formed from the distance of the centre to the ray's line,
 // and the near root uses the stable quadratic form, so far-away and tiny
-// spheres keep their precision.
+// spheres keep their precision. It answers task A2.2, so the student tree
+// holds it as object code only (tasks/framework_answer.h).
 #pragma once
 
 #include <cmath>
 
 #include "core/ray.h"
+#include "tasks/framework_answer.h"
 
 namespace ll {
 
 // Tests the sphere (center, radius) for t in (tmin, tmax); returns the nearest
 // such t. Hits from inside return the exit point.
-inline bool intersectSphere(const Ray& ray, const Vec3& center, float radius, float tmin, float tmax,
-                            float& t) {
+bool intersectSphere(const Ray& ray, const Vec3& center, float radius, float tmin, float tmax, float& t);
+
+#if !LIGHTLAB_STUDENT_TREE  // A2.2's answer: object code only in the student tree
+LIGHTLAB_ANSWER_INLINE bool intersectSphere(const Ray& ray, const Vec3& center, float radius, float tmin, float tmax,
+                                            float& t) {
+  LIGHTLAB_ANSWER_GUARD("A2.2", "ll::intersectSphere (the framework's sphere test)");
   const Vec3 f = ray.origin - center;
   const float a = glm::dot(ray.dir, ray.dir);
   const float bPrime = -glm::dot(f, ray.dir);  // b' = -b/2
@@ -36,5 +42,6 @@ inline bool intersectSphere(const Ray& ray, const Vec3& center, float radius, fl
   }
   return false;
 }
+#endif
 
 }  // namespace ll

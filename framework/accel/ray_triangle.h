@@ -1,13 +1,16 @@
 // Watertight ray/triangle intersection (Woop, Benthin and Wald, "Watertight
 // Ray/Triangle Intersection", JCGT 2(1), 2013). Rays through a shared edge or
 // vertex hit exactly one of the adjacent triangles' closed sets -- never fall
-// through a crack. Inline: it sits in every accelerator's inner loop.
+// through a crack. Inline: it sits in every accelerator's inner loop. It
+// answers task A2.3, so the student tree holds it as object code only
+// (tasks/framework_answer.h).
 #pragma once
 
 #include <cmath>
 #include <utility>
 
 #include "core/ray.h"
+#include "tasks/framework_answer.h"
 
 namespace ll {
 
@@ -16,17 +19,7 @@ struct WatertightRay {
   int kx, ky, kz;  // axes permuted so that |dir[kz]| is largest
   float sx, sy, sz;
   Vec3 origin;
-  explicit WatertightRay(const Ray& ray) : origin(ray.origin) {
-    const Vec3 a = glm::abs(ray.dir);
-    kz = a.x > a.y ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2);
-    kx = (kz + 1) % 3;
-    ky = (kx + 1) % 3;
-    const auto d = components(ray.dir);
-    if (d[kz] < 0.0f) std::swap(kx, ky);  // keep the winding
-    sx = d[kx] / d[kz];
-    sy = d[ky] / d[kz];
-    sz = 1.0f / d[kz];
-  }
+  explicit WatertightRay(const Ray& ray);
 };
 
 // Tests the triangle (p0, p1, p2) for t in (tmin, tmax). On a hit returns true
@@ -34,8 +27,26 @@ struct WatertightRay {
 // Both faces hit. Zero-area triangles (repeated or exactly collinear
 // vertices: cross(p1 - p0, p2 - p0) == 0) never hit, so no hit ever needs a
 // normal that does not exist; the scene loaders drop them as well.
-inline bool intersectTriangle(const WatertightRay& r, const Vec3& p0, const Vec3& p1, const Vec3& p2,
-                              float tmin, float tmax, float& t, float& b1, float& b2) {
+bool intersectTriangle(const WatertightRay& r, const Vec3& p0, const Vec3& p1, const Vec3& p2, float tmin,
+                       float tmax, float& t, float& b1, float& b2);
+
+#if !LIGHTLAB_STUDENT_TREE  // A2.3's answer: object code only in the student tree
+LIGHTLAB_ANSWER_INLINE WatertightRay::WatertightRay(const Ray& ray) : origin(ray.origin) {
+  LIGHTLAB_ANSWER_GUARD("A2.3", "ll::WatertightRay (the framework's watertight triangle test)");
+  const Vec3 a = glm::abs(ray.dir);
+  kz = a.x > a.y ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2);
+  kx = (kz + 1) % 3;
+  ky = (kx + 1) % 3;
+  const auto d = components(ray.dir);
+  if (d[kz] < 0.0f) std::swap(kx, ky);  // keep the winding
+  sx = d[kx] / d[kz];
+  sy = d[ky] / d[kz];
+  sz = 1.0f / d[kz];
+}
+
+LIGHTLAB_ANSWER_INLINE bool intersectTriangle(const WatertightRay& r, const Vec3& p0, const Vec3& p1, const Vec3& p2,
+                                              float tmin, float tmax, float& t, float& b1, float& b2) {
+  LIGHTLAB_ANSWER_GUARD("A2.3", "ll::intersectTriangle (the framework's watertight triangle test)");
   const auto a = components(p0 - r.origin), b = components(p1 - r.origin), c = components(p2 - r.origin);
   const float ax = a[r.kx] - r.sx * a[r.kz], ay = a[r.ky] - r.sy * a[r.kz];
   const float bx = b[r.kx] - r.sx * b[r.kz], by = b[r.ky] - r.sy * b[r.kz];
@@ -64,5 +75,6 @@ inline bool intersectTriangle(const WatertightRay& r, const Vec3& p0, const Vec3
   b2 = w * invDet;
   return true;
 }
+#endif
 
 }  // namespace ll

@@ -7,6 +7,7 @@
 #include <tbb/global_control.h>
 
 #include "core/error.h"
+#include "tasks/task_modes.h"
 
 namespace ll::cli {
 
@@ -14,6 +15,9 @@ CommandLine::CommandLine() {
   app.require_subcommand(1);
   app.add_flag("-q,--quiet", global.quiet, "No progress bars");
   app.add_option("--threads", global.threads, "Worker threads (default: all cores)")->check(CLI::Range(0, 1024));
+  app.add_option("--reference", global.reference,
+                 "Run these tasks by their reference, not your code: A2.3,A2.5, an assignment (A2), all or none "
+                 "(the student tree; in the solution tree every task is its reference)");
   commands = {
       {"render", addRenderCommand(app, global)},
       {"info", addInfoCommand(app, global)},
@@ -23,6 +27,7 @@ CommandLine::CommandLine() {
       {"grade", addGradeCommand(app, global)},
       {"study", addStudyCommand(app, global)},
       {"slides", addSlidesCommand(app, global)},
+      {"check-module", addCheckModuleCommand(app, global)},
   };
 #ifdef LIGHTLAB_HAVE_GUI
   commands["gui"] = addGuiCommand(app, global);
@@ -37,6 +42,7 @@ int runCommandLine(int argc, const char* const* argv) {
     if (cl.global.threads > 0)
       threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
                                                       static_cast<size_t>(cl.global.threads));
+    tasks::useReferences(cl.global.reference);
     for (CLI::App* sub : cl.app.get_subcommands()) cl.commands.at(sub->get_name())();
   } catch (const CLI::RuntimeError& e) {
     return e.get_exit_code();  // a command's own verdict (e.g. compare --max), already explained

@@ -4,14 +4,16 @@
 #pragma once
 
 #include <functional>
+#include <string>
 
 #include <CLI/CLI.hpp>
 
 namespace ll::cli {
 
 struct GlobalOptions {
-  bool quiet = false;  // no progress bars
-  int threads = 0;     // 0 = all cores
+  bool quiet = false;     // no progress bars
+  int threads = 0;        // 0 = all cores
+  std::string reference;  // tasks run by their reference (--reference A2.3,A2.5)
 };
 
 using Command = std::function<void()>;
@@ -24,6 +26,7 @@ Command addRadiosityCommand(CLI::App& app, const GlobalOptions& global);
 Command addGradeCommand(CLI::App& app, const GlobalOptions& global);
 Command addStudyCommand(CLI::App& app, const GlobalOptions& global);
 Command addSlidesCommand(CLI::App& app, const GlobalOptions& global);
+Command addCheckModuleCommand(CLI::App& app, const GlobalOptions& global);
 #ifdef LIGHTLAB_HAVE_GUI
 Command addGuiCommand(CLI::App& app, const GlobalOptions& global);
 #endif

@@ -1,6 +1,7 @@
 #include "render/render_job.h"
 
 #include "core/timer.h"
+#include "tasks/task_modes.h"
 
 namespace ll {
 
@@ -36,6 +37,8 @@ void RenderJob::run(const std::function<void(int, int)>& onPass) {
   stats_.cancelled = cancel_;
   stats_.missingTasks = taskLog_.missing();
   stats_.exactFallbacks = taskLog_.exact();
+  stats_.taskViolations = taskLog_.violations();
+  stats_.referenceTasks = tasks::referenceList();
 }
 
 }  // namespace ll

@@ -34,6 +34,8 @@ nlohmann::json RenderStats::toJson() const {
       {"non_finite_samples", work.nonFinite},
       {"missing_tasks", missingTasks},
       {"exact_fallbacks", exactFallbacks},
+      {"task_violations", taskViolations},
+      {"reference_tasks", referenceTasks},
   };
 }
 

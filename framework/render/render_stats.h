@@ -41,6 +41,8 @@ struct RenderStats {
   bool cancelled = false;
   std::map<std::string, std::string> missingTasks;  // task id -> what
   std::set<std::string> exactFallbacks;             // of those, the ones whose fallback changes nothing but time
+  std::map<std::string, std::string> taskViolations;  // task id -> the rule its code broke
+  std::string referenceTasks;                       // tasks run by their reference (--reference), "A2.3,A2.5"
 
   nlohmann::json toJson() const;
 };

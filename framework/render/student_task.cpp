@@ -1,5 +1,7 @@
 #include "render/student_task.h"
 
+#include "tasks/task_calls.h"
+
 #include <mutex>
 #include <utility>
 #include <vector>
@@ -50,6 +52,16 @@ std::set<std::string> TaskLog::exact() const {
   return ids;
 }
 
+void TaskLog::reportViolation(const std::string& id, const std::string& message) {
+  std::lock_guard lock(mutex_);
+  violations_.try_emplace(id, message);
+}
+
+std::map<std::string, std::string> TaskLog::violations() const {
+  std::lock_guard lock(mutex_);
+  return violations_;
+}
+
 std::map<std::string, std::string> TaskLog::missing() const {
   std::lock_guard lock(mutex_);
   return missing_;
@@ -58,6 +70,7 @@ std::map<std::string, std::string> TaskLog::missing() const {
 void TaskLog::clear() {
   std::lock_guard lock(mutex_);
   missing_.clear();
+  violations_.clear();
   striping_.clear();
   serial_.store(nextSerial(), std::memory_order_release);
 }
@@ -68,6 +81,7 @@ ScopedTaskLog::~ScopedTaskLog() { tCurrentLog = previous_; }
 TaskLog* currentTaskLog() { return tCurrentLog; }
 
 void reportMissingTask(const char* id, const char* what, bool marksPixels) {
+  tasks::noteStubRan();
   if (marksPixels) tStubUsed = true;
   recordReported(id);
   if (!tCurrentLog) return;

@@ -1,9 +1,12 @@
 // How student stubs report themselves. A stub calls
 //   LIGHTLAB_TODO("A2.4", "Blinn-Phong shading");
-// and then returns its fallback. The render records the task as missing (the
-// CLI and GUI name it), and marks the pixels that went through the stub with
-// magenta stripes -- never a crash and never a silently black image. Stubs
-// whose fallback is exact use LIGHTLAB_TODO_EXACT (reported, not striped).
+// and returns a placeholder (no working answer: deleting the line does not
+// make the task pass). In the student tree the task's reference then stands
+// in for that call (tasks/task_modes.h), the render records the task as
+// missing (the CLI and GUI name it), and the pixels that went through the
+// stub get magenta stripes -- never a crash and never a silently black image.
+// Tasks whose reference gives the same picture, only faster (the
+// accelerators), use LIGHTLAB_TODO_EXACT: reported, not striped.
 #pragma once
 
 #include <atomic>
@@ -12,6 +15,8 @@
 #include <mutex>
 #include <set>
 #include <string>
+
+#include "tasks/visibility.h"
 
 namespace ll {
 
@@ -23,6 +28,9 @@ class TaskLog {
   void report(const std::string& id, const std::string& what, bool exact = false);
   std::map<std::string, std::string> missing() const;  // id -> description
   std::set<std::string> exact() const;                 // the missing ids whose fallback is exact
+  // A task's code broke a rule (it used the framework's own answer to itself, ...).
+  void reportViolation(const std::string& id, const std::string& message);
+  std::map<std::string, std::string> violations() const;  // id -> message
   void clear();
   // Unique for this log's contents: a new log (even at a freed log's address)
   // and clear() get a fresh serial, so per-thread report caches never go stale.
@@ -32,6 +40,7 @@ class TaskLog {
   std::atomic<uint64_t> serial_;
   mutable std::mutex mutex_;
   std::map<std::string, std::string> missing_;
+  std::map<std::string, std::string> violations_;
   std::set<std::string> striping_;  // ids reported at least once by a pixel-striping stub
 };
 
@@ -49,20 +58,21 @@ class ScopedTaskLog {
 };
 
 // The current thread's log (null if none): parallel framework code hands it to its workers.
-TaskLog* currentTaskLog();
+LIGHTLAB_FRAMEWORK_ONLY TaskLog* currentTaskLog();
 
 // Records a missing task in the current thread's log and, if `marksPixels`,
 // flags the current sample. Safe to call with no log installed. Cheap when
 // called per ray: after the first report of an id to a log, a thread skips the lock.
+// The one function here that student code (the stubs) calls.
 void reportMissingTask(const char* id, const char* what, bool marksPixels = true);
 // Reads and clears the per-thread flag "the current sample used a stub".
-bool takeStubFlag();
+LIGHTLAB_FRAMEWORK_ONLY bool takeStubFlag();
 
 // Every task ID reported anywhere in the process (with or without a log)
 // since the last call, which clears the record: the task-test program asks
 // after each test which stubs it ran, so the grader can mark that task "not
 // implemented" even where the stub's fallback passes the test.
-std::set<std::string> takeTasksReported();
+LIGHTLAB_FRAMEWORK_ONLY std::set<std::string> takeTasksReported();
 
 }  // namespace ll
 

@@ -1,0 +1,61 @@
+#include "tasks/task_calls.h"
+
+#include <array>
+#include <cstdint>
+#include <mutex>
+
+#include "render/student_task.h"
+#include "tasks/task_catalog.h"
+
+namespace ll::tasks {
+
+namespace {
+constexpr size_t kMaxTasks = 64;
+thread_local bool tStubRan = false;
+thread_local std::array<uint16_t, kMaxTasks> tRunning{};
+
+std::mutex gViolationsMutex;
+std::map<std::string, std::string> gViolations;
+}  // namespace
+
+StudentCall::StudentCall(int task) : task_(task), savedStub_(tStubRan) {
+  tStubRan = false;
+  reentered_ = tRunning[static_cast<size_t>(task)] > 0;
+  ++tRunning[static_cast<size_t>(task)];
+}
+
+StudentCall::~StudentCall() {
+  --tRunning[static_cast<size_t>(task_)];
+  tStubRan = savedStub_;
+}
+
+bool StudentCall::stubRan() const { return tStubRan; }
+
+bool studentCodeRunning(int task) { return task >= 0 && tRunning[static_cast<size_t>(task)] > 0; }
+
+void noteStubRan() { tStubRan = true; }
+
+void answerUsed(int task, const char* function) {
+  if (!studentCodeRunning(task)) return;
+  const char* id = taskCatalog()[static_cast<size_t>(task)].id;
+  reportViolation(task, std::string("your code calls ") + function + ", the framework's own answer to " + id +
+                            ": write it yourself");
+}
+
+void reportViolation(int task, const std::string& message) {
+  const std::string id = taskCatalog()[static_cast<size_t>(task)].id;
+  {
+    std::lock_guard lock(gViolationsMutex);
+    gViolations.try_emplace(id, message);
+  }
+  if (TaskLog* log = currentTaskLog()) log->reportViolation(id, message);
+}
+
+std::map<std::string, std::string> takeViolations() {
+  std::lock_guard lock(gViolationsMutex);
+  std::map<std::string, std::string> out;
+  out.swap(gViolations);
+  return out;
+}
+
+}  // namespace ll::tasks

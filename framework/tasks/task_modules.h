@@ -1,0 +1,40 @@
+// Task modules (the student tree): each task's file compiled into its own
+// shared object, lightlab_<ID>.so -- the student's in <build>/modules, the
+// references (the solution, object code only) in assignments/reference/lib
+// (in the solution tree: <build>/modules/reference). A module is loaded on
+// first use with RTLD_NOW | RTLD_LOCAL: its symbols stay its own, so no
+// student symbol can replace a framework one, and its calls to other tasks'
+// functions reach the framework's dispatch (task_function.h). Each module
+// exports one entry, lightlab_task_function(name) -> the function's address,
+// written by the build (cmake/task_module_entry.cpp.in).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "tasks/visibility.h"
+
+namespace ll::tasks {
+
+// $LIGHTLAB_STUDENT_MODULES, else the build's modules folder.
+LIGHTLAB_FRAMEWORK_ONLY std::string studentModuleDir();
+// $LIGHTLAB_REFERENCE_MODULES, else the references this build was set up with.
+LIGHTLAB_FRAMEWORK_ONLY std::string referenceModuleDir();
+LIGHTLAB_FRAMEWORK_ONLY std::string modulePath(const std::string& dir, int task);
+
+struct LoadedFunction {
+  void* address = nullptr;
+  std::string error;  // one line for the student when address is null
+};
+
+// Function `name` of `task` from the student's module or the reference.
+// Thread-safe; a module is opened once per process.
+LIGHTLAB_FRAMEWORK_ONLY LoadedFunction loadTaskFunction(int task, const std::string& name, bool reference);
+
+// Everything wrong with a built module, one line each (empty: it is fine):
+// it does not load (a symbol it uses is defined nowhere, or is framework-only),
+// its entry or a function is missing, or it exports symbols other than its
+// entry (a student file defining a framework or grader function).
+LIGHTLAB_FRAMEWORK_ONLY std::vector<std::string> checkTaskModule(const std::string& path, int task);
+
+}  // namespace ll::tasks
