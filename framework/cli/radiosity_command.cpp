@@ -78,7 +78,7 @@ Command addRadiosityCommand(CLI::App& app, const GlobalOptions& global) {
     settings.quiet = global.quiet;
     const auto solved = a5::solveScene(s.scene, settings);
     for (const auto& [id, what] : solved->missingTasks)
-      std::fprintf(stderr, "lightlab: %s not implemented: %s -- a stand-in was used\n", id.c_str(), what.c_str());
+      std::fprintf(stderr, "lightlab: %s not implemented: %s -- its reference stood in\n", id.c_str(), what.c_str());
     const a5::Solution& sol = solved->solution;
     const a5::FormFactorDiagnostics& d = solved->diagnostics();
     const double finalResidual = sol.history.empty() ? 0.0 : sol.history.back().residual;

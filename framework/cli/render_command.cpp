@@ -114,8 +114,12 @@ Command addRenderCommand(CLI::App& app, const GlobalOptions& global) {
     }
     for (const auto& [id, what] : stats.missingTasks)
       std::fprintf(stderr, "lightlab: %s not implemented: %s -- %s\n", id.c_str(), what.c_str(),
-                   stats.exactFallbacks.count(id) ? "the framework's fallback was used (same picture, slower)"
-                                                  : "a fallback was used; its pixels are striped magenta");
+                   stats.exactFallbacks.count(id) ? "its reference stood in (the same picture)"
+                                                  : "its reference stood in; those pixels are striped magenta");
+    for (const auto& [id, what] : stats.taskViolations)
+      std::fprintf(stderr, "lightlab: %s: %s\n", id.c_str(), what.c_str());
+    if (!stats.referenceTasks.empty())
+      std::fprintf(stderr, "lightlab: by their reference (--reference): %s\n", stats.referenceTasks.c_str());
     if (stats.work.nonFinite > 0)
       std::fprintf(stderr, "lightlab: %llu NaN/Inf samples were replaced by black\n",
                    static_cast<unsigned long long>(stats.work.nonFinite));

@@ -134,6 +134,7 @@ void PaneRenderer::render(const RenderRequest& request, uint64_t id) {
   s.starts = ++starts_;
   s.error.clear();
   s.missingTasks.clear();
+  s.taskViolations.clear();
   s.passes = 0;
   s.seconds = 0.0;
 
@@ -192,6 +193,7 @@ void PaneRenderer::render(const RenderRequest& request, uint64_t id) {
       s.stats = job.stats();
       s.missingTasks = job.taskLog().missing();
       s.exactFallbacks = job.taskLog().exact();
+      s.taskViolations = job.taskLog().violations();
       if (!preview && done == 1) lastPassSeconds_ = s.seconds;
       publish(s);
     });

@@ -56,7 +56,8 @@ struct PaneSnapshot {
   double buildSeconds = 0.0;  // accelerator build of the current scene
   RenderStats stats;          // as of the last completed pass
   std::map<std::string, std::string> missingTasks;  // student task id -> what
-  std::set<std::string> exactFallbacks;  // missing tasks whose fallback changes only the time
+  std::set<std::string> exactFallbacks;  // missing tasks whose reference gives the same picture
+  std::map<std::string, std::string> taskViolations;  // task id -> the rule its code broke
   std::string error;                     // set when phase == Failed
 };
 

@@ -154,8 +154,9 @@ void paneBanners(ImDrawList* dl, AppState& app, const PaneState& p, Rect r) {
   std::vector<std::string> lines;
   for (const auto& [id, what] : p.shown.missingTasks)
     lines.push_back("Task " + id + " not implemented: " + what +
-                    (p.shown.exactFallbacks.count(id) ? " (fallback: same picture, slower)"
-                                                      : " (striped pixels use the stub)"));
+                    (p.shown.exactFallbacks.count(id) ? " (its reference stands in: the same picture)"
+                                                      : " (its reference stands in: striped pixels)"));
+  for (const auto& [id, what] : p.shown.taskViolations) lines.push_back("Task " + id + ": " + what);
   if (!lines.empty())
     captionBox(app.overlayRects, dl, r.x, r.y + r.h, lines, IM_COL32(150, 20, 120, 230), r.w,
                Anchor::Bottom);

@@ -1,6 +1,7 @@
 #include "tasks/task_calls.h"
 
 #include <array>
+#include <bitset>
 #include <cstdint>
 #include <mutex>
 
@@ -43,12 +44,25 @@ void answerUsed(int task, const char* function) {
 }
 
 void reportViolation(int task, const std::string& message) {
+  // Once per thread, task and render (violations may repeat per ray).
+  thread_local std::bitset<kMaxTasks> seen;
+  thread_local uint64_t seenSerial = 0;
+  thread_local const TaskLog* seenLog = nullptr;
+  TaskLog* log = currentTaskLog();
+  const uint64_t serial = log ? log->serial() : 0;
+  if (log != seenLog || serial != seenSerial) {
+    seen.reset();
+    seenLog = log;
+    seenSerial = serial;
+  }
+  if (seen.test(static_cast<size_t>(task)) && log) return;
+  seen.set(static_cast<size_t>(task));
   const std::string id = taskCatalog()[static_cast<size_t>(task)].id;
   {
     std::lock_guard lock(gViolationsMutex);
     gViolations.try_emplace(id, message);
   }
-  if (TaskLog* log = currentTaskLog()) log->reportViolation(id, message);
+  if (log) log->reportViolation(id, message);
 }
 
 std::map<std::string, std::string> takeViolations() {
