@@ -216,16 +216,16 @@ void expectEverySampleOnce(const CountingShader& s, float lo, float hi) {
   EXPECT_EQ(static_cast<float>(total), (hi - lo) * (hi - lo));
 }
 
-TEST(A1_Pipeline, TessellatedSquareCoversExactlyItsAreaEdgesThroughSampleCentres) {
+TEST(A1_2_Pipeline, TessellatedSquareCoversExactlyItsAreaEdgesThroughSampleCentres) {
   // Square [8.5, 56.5]^2: every edge of the 12 x 12 grid runs through sample centres.
   expectEverySampleOnce(*drawCounting(tessellatedSquare(8.5f, 56.5f, 12, 0.0f)), 8.5f, 56.5f);
 }
 
-TEST(A1_Pipeline, JitteredTessellationHasNoGapsOrDoubleHits) {
+TEST(A1_2_Pipeline, JitteredTessellationHasNoGapsOrDoubleHits) {
   expectEverySampleOnce(*drawCounting(tessellatedSquare(4.5f, 60.5f, 14, 1.3f)), 4.5f, 60.5f);
 }
 
-TEST(A1_Pipeline, FanAroundASampleCentreDrawsItOnce) {
+TEST(A1_2_Pipeline, FanAroundASampleCentreDrawsItOnce) {
   std::vector<Vec2> pts;
   const Vec2 c(32.5f, 32.5f);
   for (int k = 0; k < 16; ++k) {  // 16 triangles around the sample centre (32, 32)
@@ -240,7 +240,7 @@ TEST(A1_Pipeline, FanAroundASampleCentreDrawsItOnce) {
     for (int x = 14; x < 50; ++x) ASSERT_LE(s->hits(x, y), 1) << x << "," << y;
 }
 
-TEST(A1_Pipeline, SupersamplingAveragesTheCoveredFraction) {
+TEST(A1_2_Pipeline, SupersamplingAveragesTheCoveredFraction) {
   // A square whose left edge halves pixel column 10 at 16 samples per pixel.
   CountingShader shader({Vec2(42.0f, 0.0f), Vec2(256.0f, 0.0f), Vec2(256.0f, 256.0f), Vec2(42.0f, 0.0f),
                          Vec2(256.0f, 256.0f), Vec2(42.0f, 256.0f)},
@@ -258,7 +258,7 @@ TEST(A1_Pipeline, SupersamplingAveragesTheCoveredFraction) {
   EXPECT_EQ(img.at(11, 5), Rgb(1.0f));
 }
 
-TEST(A1_Pipeline, NearPlaneClippingKeepsTheVisiblePart) {
+TEST(A1_2_Pipeline, NearPlaneClippingKeepsTheVisiblePart) {
   // A floor running from behind the camera to far ahead: without clipping
   // the vertex behind the eye (w < 0) would flip the triangle across the screen.
   const std::string scene = R"({
@@ -354,7 +354,7 @@ void expectAnalyticPlane(const Rendered& r, float tolerance) {
   EXPECT_GT(checked, 1000);
 }
 
-TEST(A1_BlinnPhong, DiffuseOnlyEqualsKdTimesCosineTimesIOverRSquared) {
+TEST(A1_4_Render, DiffuseOnlyEqualsKdTimesCosineTimesIOverRSquared) {
   for (const char* shading : {"phong", "flat", "gouraud"}) {
     SCOPED_TRACE(shading);
     const Rendered r = renderText(planeScene(R"({"ka": [0.1, 0.1, 0.1], "kd": [0.7, 0.5, 0.3]})"), "blinn-phong",
@@ -371,7 +371,7 @@ TEST(A1_BlinnPhong, DiffuseOnlyEqualsKdTimesCosineTimesIOverRSquared) {
   }
 }
 
-TEST(A1_BlinnPhong, SpecularPeakSitsWhereNDotHIsOneAndMatchesTheFormula) {
+TEST(A1_4_Render, SpecularPeakSitsWhereNDotHIsOneAndMatchesTheFormula) {
   const Rendered r = renderText(planeScene(R"({"ks": [1, 1, 1], "shininess": 40})"), "blinn-phong", {});
   expectAnalyticPlane(r, 2e-3f);
   // Divide out ks * I / r^2: what is left is (n.h)^p, whose maximum must sit
@@ -394,7 +394,7 @@ TEST(A1_BlinnPhong, SpecularPeakSitsWhereNDotHIsOneAndMatchesTheFormula) {
   EXPECT_GT(best, 0.99f);
 }
 
-TEST(A1_BlinnPhong, CheckerboardIsPerspectiveCorrect) {
+TEST(A1_1_Render, CheckerboardIsPerspectiveCorrect) {
   // A checker of 16 x 16 squares over the plane, seen at a grazing angle:
   // affine interpolation of uv would bend the squares; every pixel whose
   // centre is clearly inside a square must have that square's colour, as in
@@ -425,7 +425,7 @@ TEST(A1_BlinnPhong, CheckerboardIsPerspectiveCorrect) {
   EXPECT_GT(checked, 1000);
 }
 
-TEST(A1_Pipeline, DepthBufferSeparatesTheLightFromTheCeilingHalfAMillimetreAbove) {
+TEST(A1_3_Pipeline, DepthBufferSeparatesTheLightFromTheCeilingHalfAMillimetreAbove) {
   // The Cornell box's light quad hangs 0.5 mm below the ceiling, 800 mm from
   // the camera. With the depth range fitted to the scene every pixel whose
   // pixel centre sees the light in the ray-cast image sees it here too (a
@@ -444,7 +444,7 @@ TEST(A1_Pipeline, DepthBufferSeparatesTheLightFromTheCeilingHalfAMillimetreAbove
   EXPECT_EQ(lost, 0) << "of " << light << " light pixels";
 }
 
-TEST(A1_BlinnPhong, AgreesWithRayCastingOnALoneSphere) {
+TEST(A1_4_Render, AgreesWithRayCastingOnALoneSphere) {
   // Nothing can shadow anything here, so ray casting computes the same
   // local model: a finely tessellated sphere must match the exact one.
   const std::string path = std::string(LIGHTLAB_DATA_DIR) + "/scenes/tests/sphere_point_light.json";
@@ -473,7 +473,7 @@ TEST(A1_BlinnPhong, AgreesWithRayCastingOnALoneSphere) {
   EXPECT_NEAR(raster.at(32, 32).r, cast.at(32, 32).r, 0.01f);
 }
 
-TEST(A1_BlinnPhong, PhongShowsTheHighlightGouraudMissesIt) {
+TEST(A1_4_Render, PhongShowsTheHighlightGouraudMissesIt) {
   // The plane is two triangles and the highlight falls inside them: lit at
   // the corners only, Gouraud interpolates four dim values and loses the peak.
   const std::string text = planeScene(R"({"ks": [1, 1, 1], "shininess": 40})");
@@ -486,7 +486,7 @@ TEST(A1_BlinnPhong, PhongShowsTheHighlightGouraudMissesIt) {
   EXPECT_GT(peakOf("phong"), 5.0f * peakOf("gouraud"));
 }
 
-TEST(A1_BlinnPhong, SameImageWithOneAndTwoThreadsAndNoNonFinite) {
+TEST(A1_Render, SameImageWithOneAndTwoThreadsAndNoNonFinite) {
   const std::string text = planeScene(R"({"ka": [0.1, 0.1, 0.1], "kd": [0.7, 0.5, 0.3], "ks": [0.5, 0.5, 0.5], "shininess": 20})");
   Rendered one, two;
   {

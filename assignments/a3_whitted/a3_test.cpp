@@ -213,7 +213,7 @@ std::string mirrorScene(const std::string& offset) {
   })";
 }
 
-TEST(A3_Whitted, MirrorAt45DegreesSendsTheRayToTheTarget) {
+TEST(A3_1_Whitted, MirrorAt45DegreesSendsTheRayToTheTarget) {
   const Scene scene = sceneFrom(mirrorScene("0, 0"));
   const RayTree tree = treeAt(scene, 16, 16);
   ASSERT_GE(tree.nodes.size(), 2u);
@@ -248,7 +248,7 @@ std::string slabScene(const std::string& camera, const std::string& glass, float
   })";
 }
 
-TEST(A3_Whitted, GlassSlabShiftsARayByTheClosedFormAmount) {
+TEST(A3_2_Whitted, GlassSlabShiftsARayByTheClosedFormAmount) {
   const float theta = 30.0f * kDeg, h = 1.0f;
   const Vec3 d(std::sin(theta), 0.0f, -std::cos(theta));
   const Vec3 eye = -5.0f * d;
@@ -271,7 +271,7 @@ TEST(A3_Whitted, GlassSlabShiftsARayByTheClosedFormAmount) {
   EXPECT_NEAR(shift, 0.1938f, 1e-4f);
 }
 
-TEST(A3_Whitted, BeerLambertAttenuatesByExpMinusSigmaTimesDistance) {
+TEST(A3_4_Whitted, BeerLambertAttenuatesByExpMinusSigmaTimesDistance) {
   const std::string camera =
       R"({"eye": [0, 0, 5], "target": [0, 0, 0], "up": [0, 1, 0], "fov_y_deg": 10, "width": 33, "height": 33})";
   const Scene scene =
@@ -290,7 +290,7 @@ TEST(A3_Whitted, BeerLambertAttenuatesByExpMinusSigmaTimesDistance) {
   EXPECT_NEAR(tree.nodes[static_cast<size_t>(in)].absorption.b, std::exp(-4.0f), 1e-6f);
 }
 
-TEST(A3_Whitted, NestedDielectricsUseTheRelativeIndexAtEachInterface) {
+TEST(A3_2_Whitted, NestedDielectricsUseTheRelativeIndexAtEachInterface) {
   // A glass sphere (1.5) inside a water sphere (1.33), the camera ray through both centres.
   const Scene scene = sceneFrom(R"({
     "camera": {"eye": [0, 0, 10], "target": [0, 0, 0], "up": [0, 1, 0], "fov_y_deg": 10, "width": 33, "height": 33},
@@ -348,7 +348,7 @@ std::string boxQuads(const std::string& name, const std::string& material, Vec3 
   return out;
 }
 
-TEST(A3_Whitted, TotalInternalReflectionInsideAGlassBlockSpawnsNoRefractionRay) {
+TEST(A3_2_Whitted, TotalInternalReflectionInsideAGlassBlockSpawnsNoRefractionRay) {
   // Looking into a glass cube's face at 60 degrees: inside, the ray meets the side face at 90 - 35.3 = 54.7
   // degrees, above the critical 41.8: it must reflect totally.
   const float theta = 60.0f * kDeg;
@@ -376,7 +376,7 @@ TEST(A3_Whitted, TotalInternalReflectionInsideAGlassBlockSpawnsNoRefractionRay) 
               1e-6f);  // all of it
 }
 
-TEST(A3_Whitted, FarFromTheOriginNoSecondaryRayReHitsItsOwnSurface) {
+TEST(A3_5_Whitted, FarFromTheOriginNoSecondaryRayReHitsItsOwnSurface) {
   for (const char* offset : {"0, 0", "100000, 100000"}) {
     const Scene scene = sceneFrom(mirrorScene(offset));
     int mirrorHits = 0;
@@ -450,7 +450,7 @@ TEST(A3_Whitted, ShadowRaysOnlyForTheLightsSomethingCanOcclude) {
         ASSERT_NEAR(rab.image.at(x, y)[c], ra.image.at(x, y)[c] + rb.image.at(x, y)[c], 1e-5f) << x << "," << y;
 }
 
-TEST(A3_Whitted, DepthZeroIsRayCastingAndDeeperAddsReflections) {
+TEST(A3_4_Whitted, DepthZeroIsRayCastingAndDeeperAddsReflections) {
   const Scene scene = loadScene(std::string(LIGHTLAB_DATA_DIR) + "/scenes/whitted_1980.json");
   const Rendered flat = render(scene, "whitted", {{"max_depth", "0"}}, 64, 48);
   const Rendered deep = render(scene, "whitted", {}, 64, 48);
@@ -463,7 +463,7 @@ TEST(A3_Whitted, DepthZeroIsRayCastingAndDeeperAddsReflections) {
   EXPECT_LT(pruned.stats.work.totalRays(), deep.stats.work.totalRays());
 }
 
-TEST(A3_Whitted, TreeContributionsSumToThePixel) {
+TEST(A3_4_Whitted, TreeContributionsSumToThePixel) {
   const Scene scene = loadScene(std::string(LIGHTLAB_DATA_DIR) + "/scenes/whitted_1980.json");
   for (const auto& [x, y] : {std::pair{380, 200}, std::pair{250, 200}, std::pair{100, 400}}) {
     const RayTree tree = treeAt(scene, x, y);

@@ -127,7 +127,7 @@ a5::RadiositySettings settingsFor(a5::FormFactorMethod method, float patchSize) 
   return r;
 }
 
-TEST(A5_FormFactors, ThreeMethodsOnParallelSquaresWithReciprocity) {
+TEST(A5_1_FormFactors, ThreeMethodsOnParallelSquaresWithReciprocity) {
   const Scene scene = sceneFrom(parallelSquares(1.0f));
   struct Case {
     a5::FormFactorMethod method;
@@ -146,7 +146,7 @@ TEST(A5_FormFactors, ThreeMethodsOnParallelSquaresWithReciprocity) {
   }
 }
 
-TEST(A5_FormFactors, TinyPatchesFarFromTheOriginStayAccurate) {
+TEST(A5_1_FormFactors, TinyPatchesFarFromTheOriginStayAccurate) {
   // The same squares at 1e-3 of the size: form factors are scale-free.
   const Scene scene = sceneFrom(parallelSquares(1e-3f));
   const auto s = a5::solveScene(scene, settingsFor(a5::FormFactorMethod::Analytic, 0.06f));
@@ -183,7 +183,7 @@ TEST(A5_FormFactors, EveryRowOfAClosedCubeSumsToOne) {
   }
 }
 
-TEST(A5_Solvers, ClosedEnclosureConvergesToEOverOneMinusRho) {
+TEST(A5_2_Solvers, ClosedEnclosureConvergesToEOverOneMinusRho) {
   // Reflectance close to 1: convergence is judged by the residual, and takes many sweeps.
   for (const float rho : {0.5f, 0.95f}) {
     const Scene scene = sceneFrom(closedCube(1.0f, rho));
@@ -206,7 +206,7 @@ TEST(A5_Solvers, ClosedEnclosureConvergesToEOverOneMinusRho) {
   }
 }
 
-TEST(A5_Solvers, AllSolversAgreeWithTheDirectSolveOnTheCornellBox) {
+TEST(A5_2_Solvers, AllSolversAgreeWithTheDirectSolveOnTheCornellBox) {
   const Scene scene = loadScene(std::string(LIGHTLAB_DATA_DIR) + "/scenes/cornell_box.json");
   a5::RadiositySettings r = quickVisibility();
   r.patchSize = 0.12f;
@@ -287,7 +287,7 @@ TEST(A5_Radiosity, RendersTheCornellBoxWithColourBleedingAndNoNaN) {
   EXPECT_GT(nearRed.r, 0.01f);
 }
 
-TEST(A5_Radiosity, ProgressiveRefinementConvergesToTheBatchSouthwellAndKeepsItsStateAcrossRenders) {
+TEST(A5_3_Radiosity, ProgressiveRefinementConvergesToTheBatchSouthwellAndKeepsItsStateAcrossRenders) {
   const Scene scene = loadScene(std::string(LIGHTLAB_DATA_DIR) + "/scenes/cornell_box.json");
   a5::RadiositySettings r = quickVisibility();
   r.patchSize = 0.1f;
@@ -361,7 +361,7 @@ TEST(A5_Radiosity, TheRasterizerShowsTheSameSolutionAsRayCasting) {
   EXPECT_GT(e.ssim, 0.98);
 }
 
-TEST(A5_Radiosity, EveryProgressivePassRedrawsTheWholePicture) {
+TEST(A5_3_Radiosity, EveryProgressivePassRedrawsTheWholePicture) {
   const std::vector<std::pair<std::string, std::string>> sets = {
       {"progressive", "true"}, {"patch_size", "0.09"}, {"hemicube_res", "12"}};
   std::vector<Image> passes;

@@ -7,6 +7,7 @@
 #include <tbb/global_control.h>
 
 #include "core/error.h"
+#include "tasks/task_catalog.h"
 #include "tasks/task_modes.h"
 
 namespace ll::cli {
@@ -18,6 +19,10 @@ CommandLine::CommandLine() {
   app.add_option("--reference", global.reference,
                  "Run these tasks by their reference, not your code: A2.3,A2.5, an assignment (A2), all or none "
                  "(the student tree; in the solution tree every task is its reference)");
+  app.add_option("--isolate", global.isolate,
+                 "Run this task by your code, stub included, and every other task by its reference: what its "
+                 "tests and the grader see, e.g. --isolate A2.3")
+      ->excludes("--reference");
   commands = {
       {"render", addRenderCommand(app, global)},
       {"info", addInfoCommand(app, global)},
@@ -43,6 +48,7 @@ int runCommandLine(int argc, const char* const* argv) {
       threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
                                                       static_cast<size_t>(cl.global.threads));
     tasks::useReferences(cl.global.reference);
+    if (!cl.global.isolate.empty()) tasks::isolateTask(tasks::requireTask(cl.global.isolate));
     for (CLI::App* sub : cl.app.get_subcommands()) cl.commands.at(sub->get_name())();
   } catch (const CLI::RuntimeError& e) {
     return e.get_exit_code();  // a command's own verdict (e.g. compare --max), already explained

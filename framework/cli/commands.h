@@ -14,6 +14,7 @@ struct GlobalOptions {
   bool quiet = false;     // no progress bars
   int threads = 0;        // 0 = all cores
   std::string reference;  // tasks run by their reference (--reference A2.3,A2.5)
+  std::string isolate;    // one task runs the student's code, every other its reference (--isolate A2.3)
 };
 
 using Command = std::function<void()>;

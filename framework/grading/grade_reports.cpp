@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -103,7 +104,7 @@ void finalizeScores(GradeResult& result) {
   }
 }
 
-void writeTextReport(const GradeResult& result, std::FILE* out, bool colour) {
+void writeTextReport(const GradeResult& result, std::FILE* out, bool colour, const std::string& reportPath) {
   const std::string bold = colour ? "\x1b[1m" : "", reset = colour ? "\x1b[0m" : "";
   std::fprintf(out, "%s%s: %s / %s points%s (seed %u, %s s)\n", bold.c_str(),
                assignmentName(result).c_str(), formatNumber(result.score).c_str(),
@@ -118,43 +119,55 @@ void writeTextReport(const GradeResult& result, std::FILE* out, bool colour) {
     titleWidth = std::max(titleWidth, displayWidth(task.title));
     scoreWidth = std::max(scoreWidth, displayWidth(scores.back()));
   }
-
   for (size_t i = 0; i < result.tasks.size(); ++i) {
     const TaskResult& task = result.tasks[i];
     std::fprintf(out, "  %s  %s  %s  %s\n", padRight(task.id, idWidth).c_str(),
                  padRight(task.title, titleWidth).c_str(), padLeft(scores[i], scoreWidth).c_str(),
                  coloured(statusName(task.status), task.status, colour).c_str());
+  }
+  // Then, per task that lost points, what failed -- in full.
+  for (const TaskResult& task : result.tasks) {
     if (task.status == Status::Passed) continue;
-    if (task.tests.empty()) {
-      std::fputs("      (no tests)\n", out);
-      continue;
-    }
-    // Identical messages (a stub fails every test alike) are printed once with a count.
-    std::vector<std::pair<const TestResult*, int>> lines;
+    std::fprintf(out, "\n%s%s %s: %s%s\n", bold.c_str(), task.id.c_str(), task.title.c_str(),
+                 statusName(task.status), reset.c_str());
+    if (!task.file.empty())
+      std::fprintf(out, "  look at: %s (%s)\n", task.file.c_str(), task.functions.c_str());
+    if (task.tests.empty()) std::fputs("  (no tests)\n", out);
+    // A stub (or a module that does not load) fails every test alike: said once, with a count.
+    std::vector<std::pair<const TestResult*, int>> shown;
     for (const TestResult& t : task.tests) {
       if (t.status == Status::Passed) continue;
-      auto same = std::find_if(lines.begin(), lines.end(), [&t](const auto& l) {
-        return l.first->status == t.status && !t.message.empty() && l.first->message == t.message;
+      auto same = std::find_if(shown.begin(), shown.end(), [&t](const auto& l) {
+        return l.first->status == t.status && l.first->details.empty() && t.details.empty() &&
+               l.first->message == t.message;
       });
-      if (same != lines.end()) {
-        ++same->second;
-      } else {
-        lines.emplace_back(&t, 1);
-      }
+      if (same != shown.end()) ++same->second;
+      else shown.emplace_back(&t, 1);
     }
-    for (const auto& [t, count] : lines) {
-      std::string message = t->message.empty() ? t->name : t->message;
-      // Continuation lines stay under the message.
-      const std::string indent = "\n" + std::string(8 + displayWidth(statusName(t->status)), ' ');
-      for (size_t pos = 0; (pos = message.find('\n', pos)) != std::string::npos;) {
-        message.replace(pos, 1, indent);
-        pos += indent.size();
+    size_t printed = 0;
+    for (const auto& [t, count] : shown) {
+      if (++printed > 8) {
+        std::fprintf(out, "  ... and %zu more (see the report)\n", shown.size() - 8);
+        break;
       }
+      std::string message = t->message.empty() ? t->name : t->message;
       if (count > 1) message += " (" + std::to_string(count) + " tests)";
-      std::fprintf(out, "      %s: %s\n",
-                   coloured(statusName(t->status), t->status, colour).c_str(), message.c_str());
+      std::fprintf(out, "  %s %s\n", coloured(statusName(t->status), t->status, colour).c_str(), message.c_str());
+      // The details, indented, at most 40 lines per check.
+      std::istringstream lines(t->details);
+      std::string line;
+      int n = 0;
+      while (std::getline(lines, line)) {
+        if (++n > 40) {
+          std::fputs("      ...\n", out);
+          break;
+        }
+        std::fprintf(out, "      %s\n", line.c_str());
+      }
     }
   }
+  if (!reportPath.empty() && result.score < result.maxScore)
+    std::fprintf(out, "\nDetails, with the images side by side: %s\n", reportPath.c_str());
 }
 
 void writeJUnitReport(const GradeResult& result, const std::string& path) {

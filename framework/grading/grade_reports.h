@@ -10,8 +10,11 @@
 
 namespace ll::grading {
 
-// A table: task, points, status, and under each failed task its messages.
-void writeTextReport(const GradeResult& result, std::FILE* out, bool colour);
+// A table: task, points, status, and under each task that lost points every
+// failed check in full (the assertion with its expected and actual values,
+// the input that failed and how to trace it), the file and function to look
+// at, and at the end `reportPath` (the HTML report), when given.
+void writeTextReport(const GradeResult& result, std::FILE* out, bool colour, const std::string& reportPath = "");
 
 // `dir`/report.html: per task its score and tests; per image test the
 // student's and the reference image side by side, a wipe slider between

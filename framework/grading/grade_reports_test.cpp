@@ -29,11 +29,11 @@ GradeResult sample() {
   GradeResult r;
   r.assignment = "A9";
   r.title = "Sample <&>";
-  TaskResult a{"A9.1", "weighted", 30.0, 0.0, Status::Error, {}};
+  TaskResult a{"A9.1", "weighted", 30.0, 0.0, Status::Error, {}, "", ""};
   a.tests = {test("A9.1", Status::Passed, 2.0), test("A9.1", Status::Failed, 1.0, "A9.1: off by \"one\"")};
-  TaskResult b{"A9.2", "stub", 20.0, 0.0, Status::Error, {}};
+  TaskResult b{"A9.2", "stub", 20.0, 0.0, Status::Error, {}, "", ""};
   b.tests = {test("A9.2", Status::Passed, 1.0), test("A9.2", Status::NotImplemented, 1.0, "A9.2 not implemented")};
-  TaskResult c{"A9.3", "all good", 50.0, 0.0, Status::Error, {}};
+  TaskResult c{"A9.3", "all good", 50.0, 0.0, Status::Error, {}, "", ""};
   c.tests = {test("A9.3", Status::Passed, 1.0)};
   r.tasks = {a, b, c};
   finalizeScores(r);
@@ -102,7 +102,7 @@ TEST(GradingSpec, EveryAssignmentsSpecLoadsWithItsReferences) {
         }
     }
     EXPECT_GT(points, 0.0);
-    for (const std::string& f : s.studentFiles) EXPECT_TRUE(fs::exists(fs::path(path).parent_path() / f)) << f;
+    for (const std::string& f : s.studentFiles()) EXPECT_TRUE(fs::exists(fs::path(path).parent_path() / f)) << f;
   }
   EXPECT_EQ(findGradingSpec("a2", root + "/assignments", LIGHTLAB_DATA_DIR).assignment, "A2");
   EXPECT_THROW(findGradingSpec("A0", root + "/assignments", LIGHTLAB_DATA_DIR), UserError);

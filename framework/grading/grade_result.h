@@ -43,7 +43,8 @@ struct TestResult {
   Status status = Status::Error;
   double weight = 1.0;  // share of the task's points (relative to the task's other tests)
   std::string message;  // one line naming the task and what differs; empty when passed
-  std::string details;  // measured values, several lines allowed
+  std::string details;  // the whole story: every failed assertion with expected and actual values, measured
+                        // values, the input that failed and how to trace it; several lines
   double seconds = 0.0; // wall time of the check
   std::optional<ImageEvidence> images;
 };
@@ -55,6 +56,8 @@ struct TaskResult {
   double score = 0.0;   // points * (weight of the passed tests / weight of all tests)
   Status status = Status::Error;  // Passed only if every test passed; NotImplemented if any test found the stub
   std::vector<TestResult> tests;
+  std::string file;       // the student's file to look at: "assignments/a2_raycasting/blinn_phong.cpp"
+  std::string functions;  // what it defines: "blinnPhong"
 };
 
 struct GradeResult {

@@ -43,30 +43,34 @@ GradingSpec loadGradingSpec(const std::string& path, const std::string& dataDir)
   const JsonDocument doc = JsonDocument::load(path);
   const JsonNode root(doc, doc.root(), "", "grading spec");
   root.requireObject();
-  root.allowOnly({"assignment", "title", "description", "student_files", "tasks"});
+  root.allowOnly({"assignment", "title", "description", "tasks"});
   GradingSpec spec;
   spec.path = path;
   spec.assignment = root.string("assignment");
   spec.title = root.string("title");
-  if (root.has("student_files")) {
-    const JsonNode files = root.child("student_files");
-    files.requireArray();
-    for (size_t i = 0; i < files.size(); ++i) {
-      if (!files.at(i).json().is_string()) files.at(i).fail("student_files lists file names (strings)");
-      spec.studentFiles.push_back(files.at(i).json().get<std::string>());
+  const auto strings = [](const JsonNode& node, const std::string& what) {
+    node.requireArray();
+    std::vector<std::string> out;
+    for (size_t i = 0; i < node.size(); ++i) {
+      if (!node.at(i).json().is_string()) node.at(i).fail(what + " lists names (strings)");
+      out.push_back(node.at(i).json().get<std::string>());
     }
-  }
+    return out;
+  };
   const JsonNode tasks = root.child("tasks");
   tasks.requireArray();
   for (size_t i = 0; i < tasks.size(); ++i) {
     const JsonNode task = tasks.at(i);
     task.requireObject();
-    task.allowOnly({"id", "title", "points", "tests"});
+    task.allowOnly({"id", "title", "points", "file", "functions", "recursive", "forbidden", "tests"});
     TaskSpec t;
     t.id = task.string("id");
     if (t.id.rfind(spec.assignment + ".", 0) != 0) task.child("id").fail("task IDs start with '" + spec.assignment + ".'");
     t.title = task.string("title");
     t.points = task.number("points", 0.0f, 1000.0f);
+    t.file = task.string("file");
+    t.functions = strings(task.child("functions"), "functions");
+    if (task.has("forbidden")) t.forbidden = strings(task.child("forbidden"), "forbidden");
     const JsonNode tests = task.child("tests");
     tests.requireArray();
     if (tests.size() == 0) tests.fail("a task needs at least one test");
@@ -78,7 +82,7 @@ GradingSpec loadGradingSpec(const std::string& path, const std::string& dataDir)
       s.weight = test.number("weight", 1.0f, 0.0f, 1000.0f);
       if (s.kind == "unit") {
         test.allowOnly({"kind", "weight", "filter"});
-        s.filter = test.string("filter");
+        if (test.has("filter")) s.filter = test.string("filter");
       } else if (s.kind == "image") {
         test.allowOnly({"kind", "weight", "reference"});
         s.reference = test.string("reference");
@@ -97,6 +101,14 @@ GradingSpec loadGradingSpec(const std::string& path, const std::string& dataDir)
     spec.tasks.push_back(std::move(t));
   }
   return spec;
+}
+
+std::string GradingSpec::folder() const { return fs::path(path).parent_path().string(); }
+
+std::vector<std::string> GradingSpec::studentFiles() const {
+  std::vector<std::string> out;
+  for (const TaskSpec& t : tasks) out.push_back(t.file);
+  return out;
 }
 
 std::vector<std::string> findGradingSpecs(const std::string& assignmentsDir) {

@@ -1,7 +1,13 @@
 // An assignment's grading spec: assignments/<dir>/grading.json lists the
-// tasks (ID, title, points) and, per task, the tests that grade it:
+// tasks (ID, title, points, the file and functions the student writes,
+// "recursive" for a task that calls itself through the framework,
+// "forbidden": names the task's file must not use) and, per task, the tests
+// that grade it:
 //
-//   {"kind": "unit", "filter": "A2_4_*"}       gtest cases of lightlab_task_tests (each a test)
+//   {"kind": "unit"}                           the task's tests in lightlab_task_tests: every case
+//                                              whose suite names the task (A2_4_*, A6/A6_1_Furnace.*),
+//                                              each a test; optional "filter" narrows them
+//                                              (a GoogleTest filter)
 //   {"kind": "image", "reference": "a2/sphere_point_light.hdr"}
 //        a render against a reference image of data/references/<dir>/references.json:
 //        its tolerances plus a per-pixel one, or, for a Monte Carlo entry (with a
@@ -37,6 +43,9 @@ struct TaskSpec {
   std::string id;     // "A2.4"
   std::string title;
   double points = 0.0;
+  std::string file;                    // the student's file, relative to the spec's folder
+  std::vector<std::string> functions;  // what it defines (in ll::aN)
+  std::vector<std::string> forbidden;  // names the file must not use (e.g. glm::lookAt for A1.1)
   std::vector<TestSpec> tests;
 };
 
@@ -44,8 +53,9 @@ struct GradingSpec {
   std::string path;        // the grading.json
   std::string assignment;  // "A2"
   std::string title;
-  std::vector<std::string> studentFiles;  // relative to the spec's folder: what a submission replaces
   std::vector<TaskSpec> tasks;
+  std::string folder() const;                     // the spec's folder (assignments/a2_raycasting)
+  std::vector<std::string> studentFiles() const;  // every task's file: what a submission replaces
 };
 
 // Loads one spec; image references are resolved against `dataDir`'s
