@@ -6,6 +6,7 @@
 #                            # else a headless render whose path is printed
 #   bash .ci/setup.sh test   # the whole test suite (ctest, in parallel)
 #   bash .ci/setup.sh build  # install + build only
+#   bash .ci/setup.sh install  # install the packages only
 set -euo pipefail
 mode=${1:-run}
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -32,6 +33,8 @@ if [ ${#missing[@]} -gt 0 ]; then
   "${sudo_cmd[@]}" apt-get update -qq
   "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
+
+[ "$mode" = install ] && exit 0
 
 # Copies of the tree that the tests build (student tree, planted bugs) sit at
 # <copy>/build like this one at <root>/build: relative paths make ccache reuse objects.

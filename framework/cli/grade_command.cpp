@@ -1,6 +1,6 @@
 // lightlab grade ASSIGNMENT [--report DIR] [--format text,html,junit,gradescope]
 //                [--seed N] [--task ID] [--task-tests PATH] [--min-score P]
-//                [--student-modules DIR] [--sources DIR] [--sandbox-user NAME]
+//                [--student-modules DIR] [--sources DIR] [--sandbox-user NAME] [--work-dir DIR]
 //                [--budget S] [--test-timeout S] [--render-timeout S] [--grading-seed N]
 // Grades the assignment (A1..A6, a folder name, or a grading.json) with the
 // code this build holds (in the student tree: build/modules): the task tests,
@@ -36,7 +36,7 @@ struct GradeOptions {
   std::vector<std::string> formats = {"text", "html", "junit", "gradescope"};
   unsigned seed = 1;
   double minScore = -1.0;
-  std::string studentModules, sources, sandboxUser;
+  std::string studentModules, sources, sandboxUser, workDir;
   double budget = 480.0, testTimeout = 30.0, renderTimeout = 120.0;
   unsigned gradingSeed = 1;
 };
@@ -74,6 +74,7 @@ Command addGradeCommand(CLI::App& app, const GlobalOptions& global) {
   cmd->add_option("--student-modules", o->studentModules,
                   "Task modules to grade (default: this build's build/modules; the autograder's own build)");
   cmd->add_option("--sources", o->sources, "The student's files, checked for names a task forbids (default: the assignment's folder)");
+  cmd->add_option("--work-dir", o->workDir, "Where student code runs and writes (default: <report>/files/work)");
   cmd->add_option("--sandbox-user", o->sandboxUser, "Run student code as this unprivileged user, with limits (root only)");
   cmd->add_option("--budget", o->budget, "Seconds for the whole grading")->capture_default_str()->check(CLI::Range(1.0, 86400.0));
   cmd->add_option("--test-timeout", o->testTimeout, "Seconds per task test")->capture_default_str()->check(CLI::Range(1.0, 3600.0));
@@ -102,6 +103,7 @@ Command addGradeCommand(CLI::App& app, const GlobalOptions& global) {
     g.renderTimeout = o->renderTimeout;
     g.sandbox = sandboxFor(o->sandboxUser);
     g.sourceDir = o->sources;
+    g.workDir = o->workDir;
     g.childEnv.push_back("LIGHTLAB_GRADING_SEED=" + std::to_string(o->gradingSeed));
     if (!o->studentModules.empty()) {
       const std::string dir = fs::absolute(o->studentModules).string();
