@@ -8,7 +8,7 @@
 #   ${CMAKE_BINARY_DIR}/generated/tasks/task_catalog.inc.
 
 function(lightlab_read_task_catalog)
-  file(GLOB specs CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/assignments/*/grading.json)
+  file(GLOB specs CONFIGURE_DEPENDS ${LIGHTLAB_ROOT}/assignments/*/grading.json)
   list(SORT specs)
   set(ids "")
   set(rows "")

@@ -1,8 +1,13 @@
 // Helpers shared by the GoogleTest files (tests/ is on their include path).
 #pragma once
 
+#include <cstdint>
+#include <cstdlib>
+#include <ostream>
+#include <random>
 #include <string>
 
+#include <glm/gtc/matrix_access.hpp>
 #include <gtest/gtest.h>
 
 #include "core/error.h"
@@ -10,6 +15,29 @@
 #include "render/student_task.h"
 
 namespace ll::testing_support {
+
+// The seed of the task tests' random inputs: $LIGHTLAB_GRADING_SEED, else 1. The
+// autograder sets its own (the student tree does not hold it), so a lookup table of
+// the inputs a student can see earns nothing.
+inline uint32_t gradingSeed() {
+  const char* s = std::getenv("LIGHTLAB_GRADING_SEED");
+  return s && *s ? static_cast<uint32_t>(std::strtoul(s, nullptr, 10)) : 1u;
+}
+
+// A random stream for one test: the grading seed mixed with the test's own salt.
+inline std::mt19937 gradingRng(uint32_t salt) {
+  std::seed_seq seq{gradingSeed(), salt};
+  return std::mt19937(seq);
+}
+
+// A translation by whole units, in [-8, 8]^3, drawn from the grading seed: tests move
+// their whole set-up by it (the answers do not change) so that their inputs are not
+// the ones the student tree shows.
+inline Vec3 gradingOffset(uint32_t salt) {
+  std::mt19937 rng = gradingRng(salt);
+  std::uniform_int_distribution<int> k(-8, 8);
+  return Vec3(static_cast<float>(k(rng)), static_cast<float>(k(rng)), static_cast<float>(k(rng)));
+}
 
 // The message of the UserError `f` throws ("" and a test failure if none).
 template <class F>
@@ -50,3 +78,29 @@ testing::AssertionResult implemented(const char* id, F&& probe) {
 }
 
 }  // namespace ll::testing_support
+
+// How GoogleTest prints the framework's values in a failure: as decimal numbers.
+namespace glm {
+template <length_t L, typename T, qualifier Q>
+void PrintTo(const vec<L, T, Q>& v, std::ostream* os) {
+  *os << "(";
+  for (length_t i = 0; i < L; ++i) *os << (i ? ", " : "") << v[i];
+  *os << ")";
+}
+template <length_t C, length_t R, typename T, qualifier Q>
+void PrintTo(const mat<C, R, T, Q>& m, std::ostream* os) {
+  *os << "[";
+  for (length_t r = 0; r < R; ++r) {
+    *os << (r ? "; " : "");
+    for (length_t c = 0; c < C; ++c) *os << (c ? " " : "") << m[c][r];
+  }
+  *os << "]";
+}
+}  // namespace glm
+
+namespace ll {
+inline void PrintTo(const Ray& r, std::ostream* os) {
+  *os << "ray from (" << r.origin.x << ", " << r.origin.y << ", " << r.origin.z << ") along (" << r.dir.x << ", "
+      << r.dir.y << ", " << r.dir.z << "), t in (" << r.tmin << ", " << r.tmax << ")";
+}
+}  // namespace ll

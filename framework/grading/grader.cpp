@@ -276,7 +276,9 @@ class Grader {
     bool stubMentioned = false;
     for (const auto& f : end.value("failures", nlohmann::json::array())) {
       const std::string message = f.value("message", "");
-      details += f.value("where", "") + ":\n" + message + "\n";
+      const std::string where = f.value("where", "");
+      if (where.find("task_tests_main.cpp") == std::string::npos)  // not the harness's own verdict
+        details += where + ":\n" + message + "\n";
       stubMentioned = stubMentioned || message.find(t.id + " not implemented") != std::string::npos;
     }
     const auto stubs = end.value("stubs", std::vector<std::string>());

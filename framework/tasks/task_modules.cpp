@@ -159,7 +159,7 @@ LoadedFunction loadTaskFunction(int task, const std::string& name, bool referenc
   return f;
 }
 
-std::vector<std::string> checkTaskModule(const std::string& path, int task) {
+std::vector<std::string> checkModuleExports(const std::string& path, int task) {
   std::vector<std::string> problems;
   const TaskInfo& info = taskCatalog()[static_cast<size_t>(task)];
   std::map<std::string, bool> exported;
@@ -173,6 +173,12 @@ std::vector<std::string> checkTaskModule(const std::string& path, int task) {
     problems.push_back(info.path() + " defines and exports " + name + ": a task module defines only " + info.id +
                        "'s functions (" + info.functions + "); it cannot replace framework or grader code");
   }
+  return problems;
+}
+
+std::vector<std::string> checkModuleLoads(const std::string& path, int task) {
+  std::vector<std::string> problems;
+  const TaskInfo& info = taskCatalog()[static_cast<size_t>(task)];
   const Module m = openModule(path, task);
   if (!m.handle) {
     problems.push_back(m.error);

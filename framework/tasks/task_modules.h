@@ -31,10 +31,14 @@ struct LoadedFunction {
 // Thread-safe; a module is opened once per process.
 LIGHTLAB_FRAMEWORK_ONLY LoadedFunction loadTaskFunction(int task, const std::string& name, bool reference);
 
-// Everything wrong with a built module, one line each (empty: it is fine):
-// it does not load (a symbol it uses is defined nowhere, or is framework-only),
-// its entry or a function is missing, or it exports symbols other than its
-// entry (a student file defining a framework or grader function).
-LIGHTLAB_FRAMEWORK_ONLY std::vector<std::string> checkTaskModule(const std::string& path, int task);
+// What is wrong with a built module's exports, one line each (empty: nothing):
+// symbols other than its entry (a student file defining a framework or grader
+// function). Reads the file only; no student code runs.
+LIGHTLAB_FRAMEWORK_ONLY std::vector<std::string> checkModuleExports(const std::string& path, int task);
+
+// What is wrong when the module loads in this process (it runs the module's
+// static initialisers: call it in a child process): a symbol it uses is
+// defined nowhere or is framework-only, its entry or a function is missing.
+LIGHTLAB_FRAMEWORK_ONLY std::vector<std::string> checkModuleLoads(const std::string& path, int task);
 
 }  // namespace ll::tasks
