@@ -203,6 +203,8 @@ TEST_F(A2_2_RaySphere, DirectionNeedNotBeUnit) {
 
 TEST_F(A2_2_RaySphere, Misses) {
   float t = 0.0f;
+  // (A control first: a test that always says "no hit" must not pass this.)
+  ASSERT_TRUE(hit(makeRay({0.99f, 0, 5}, {0, 0, -1}), Vec3(0.0f), 1.0f, t)) << "a ray 0.01 inside the silhouette";
   EXPECT_FALSE(hit(makeRay({1.01f, 0, 5}, {0, 0, -1}), Vec3(0.0f), 1.0f, t));
   EXPECT_FALSE(hit(makeRay({0, 0, 5}, {0, 0, 1}), Vec3(0.0f), 1.0f, t));  // sphere behind
   EXPECT_FALSE(hit(makeRay({0, 0, 5}, {0, 1, 0}), Vec3(0.0f), 1.0f, t));
@@ -301,10 +303,13 @@ TEST_F(A2_3_RayTriangle, BothFacesHit) {
 TEST_F(A2_3_RayTriangle, MissesOutsideEachEdgeAndWhenParallel) {
   const Vec3 n = glm::normalize(glm::cross(p1 - p0, p2 - p0));
   float t = 0.0f, b1 = 0.0f, b2 = 0.0f;
-  // Just outside each edge: one barycentric slightly negative.
+  // Just outside each edge: one barycentric slightly negative; just inside it, a hit (the control).
   for (Vec3 w : {Vec3(-0.02f, 0.5f, 0.52f), Vec3(0.5f, -0.02f, 0.52f), Vec3(0.5f, 0.52f, -0.02f)}) {
     const Vec3 P = w.x * p0 + w.y * p1 + w.z * p2;
     EXPECT_FALSE(a2::rayTriangle(makeRay(P + n, -n), p0, p1, p2, t, b1, b2)) << w.x << "," << w.y << "," << w.z;
+    const Vec3 inside = 0.9f * P + 0.1f * (p0 + p1 + p2) / 3.0f;  // that barycentric now about +0.015
+    EXPECT_TRUE(a2::rayTriangle(makeRay(inside + n, -n), p0, p1, p2, t, b1, b2)) << "just inside, near " << w.x << ","
+                                                                                     << w.y << "," << w.z;
   }
   // Parallel to the triangle's plane.
   const Vec3 inPlane = p1 - p0;
@@ -323,12 +328,18 @@ TEST_F(A2_3_RayTriangle, RespectsTminAndTmax) {
 
 TEST_F(A2_3_RayTriangle, RepeatedVertexNeverHits) {
   float t = 0.0f, b1 = 0.0f, b2 = 0.0f;
-  const Vec3 a(0.1f, 0.2f, 0.3f), b(1.1f, 1.7f, 1.3f);
+  const Vec3 a(0.1f, 0.2f, 0.3f), b(1.1f, 1.7f, 1.3f), c(0.9f, -0.4f, 0.8f);
   for (int i = 0; i <= 10; ++i) {
     const Vec3 target = a + (static_cast<float>(i) / 10.0f) * (b - a);
     const Vec3 o = target + Vec3(0.3f, -2.0f, 1.0f);
     EXPECT_FALSE(a2::rayTriangle(makeRay(o, target - o), a, a, b, t, b1, b2)) << i;
     EXPECT_FALSE(a2::rayTriangle(makeRay(o, target - o), a, b, b, t, b1, b2)) << i;
+  }
+  // The control: the same rays do hit a real triangle with that edge, between its ends.
+  for (int i = 1; i < 10; ++i) {
+    const Vec3 target = a + (static_cast<float>(i) / 10.0f) * (b - a) + 0.01f * (c - a);
+    const Vec3 o = target + Vec3(0.3f, -2.0f, 1.0f);
+    EXPECT_TRUE(a2::rayTriangle(makeRay(o, target - o), a, b, c, t, b1, b2)) << i;
   }
 }
 
@@ -541,6 +552,14 @@ TEST_F(A2_5_ShadowRay, NoSelfShadowingFarFromTheOrigin) {
   std::mt19937 gen = testing_support::gradingRng(12);
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
   QueryCounters counters;
+  // The control: a shadow ray to a light behind the sphere is blocked (a ray that never hits
+  // anything must not pass this test).
+  const Vec3 sphereCentre = g.spheres[0].center, centroid = (g.positions[0] + g.positions[1] + g.positions[2]) / 3.0f;
+  const Vec3 beyond = sphereCentre + (sphereCentre - centroid) * 0.5f;
+  ASSERT_TRUE(accel->occluded(a2::shadowRay(point(centroid, n), glm::normalize(beyond - centroid),
+                                            glm::length(beyond - centroid)),
+                              counters))
+      << "a shadow ray through the sphere";
   int tested = 0;
   for (int i = 0; i < 500; ++i) {
     float a = u(gen), b = u(gen);

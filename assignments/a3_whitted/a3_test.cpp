@@ -467,6 +467,9 @@ TEST(A3_4_Whitted, TreeContributionsSumToThePixel) {
   const Scene scene = loadScene(std::string(LIGHTLAB_DATA_DIR) + "/scenes/whitted_1980.json");
   for (const auto& [x, y] : {std::pair{380, 200}, std::pair{250, 200}, std::pair{100, 400}}) {
     const RayTree tree = treeAt(scene, x, y);
+    // These pixels see the spheres: a camera ray, its shadow rays and at least one reflected or refracted ray.
+    ASSERT_GE(tree.nodes.size(), 3u) << x << "," << y << ": the ray tree has no children";
+    ASSERT_GT(maxComponent(tree.pixel), 0.0f) << x << "," << y;
     Rgb sum(0.0f);
     bool background = false;
     for (const RayTreeNode& n : tree.nodes) {

@@ -617,10 +617,7 @@ TEST(A4_1_Split, SahFindsTheCheapestSplitByTheSurfaceAreaOfTheChildren) {
   // the only axis to split is x and every centroid has its own bin: the binned SAH must find the
   // exact optimum of A_left * N_left + A_right * N_right over the 11 cuts. (A "SAH" by volume
   // sees every flat child as free and cuts anywhere.)
-  const auto halfArea = [](const Bounds3& b) {
-    const Vec3 e = b.extent();
-    return e.x * e.y + e.y * e.z + e.z * e.x;
-  };
+  const auto halfArea = [](const Bounds3& b) { return b.halfSurfaceArea(); };
   std::mt19937 rng(7);
   std::uniform_real_distribution<float> u(0.05f, 3.0f);
   int differentFromMedian = 0;

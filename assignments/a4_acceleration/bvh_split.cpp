@@ -23,12 +23,6 @@ int widestAxis(const Bounds3& b) {
   return e.x > e.y ? (e.x > e.z ? 0 : 2) : (e.y > e.z ? 1 : 2);
 }
 
-// Half the surface area of a box (the SAH only needs ratios).
-float halfArea(const Bounds3& b) {
-  const Vec3 e = b.extent();
-  return e.x * e.y + e.y * e.z + e.z * e.x;
-}
-
 // Object median: the lower half of the centroids along `axis` goes left.
 size_t equalCounts(std::span<BuildPrim> prims, int axis) {
   const size_t k = prims.size() / 2;
@@ -54,7 +48,7 @@ size_t sahSplit(std::span<BuildPrim> prims, const Bounds3& bounds, const Bounds3
   const size_t n = prims.size();
   // Small nodes need fewer bins: n primitives fill at most n of them.
   const int bins = std::clamp(std::min(s.bins, static_cast<int>(std::min<size_t>(n, kMaxBins)) + 2), 2, kMaxBins);
-  const float nodeArea = halfArea(bounds);
+  const float nodeArea = bounds.halfSurfaceArea();
   if (!(nodeArea > 0.0f)) return n <= static_cast<size_t>(s.maxLeaf) ? 0 : equalCounts(prims, widestAxis(cb));
 
   // One pass over the primitives fills the bins of all three axes. (Plain
@@ -109,7 +103,7 @@ size_t sahSplit(std::span<BuildPrim> prims, const Bounds3& bounds, const Bounds3
       acc.min = glm::min(acc.min, bin[i].min());  // (an empty bin's lo is +inf, its hi -inf)
       acc.max = glm::max(acc.max, bin[i].max());
       count += bin[i].count;
-      rightArea[i] = halfArea(acc);
+      rightArea[i] = acc.halfSurfaceArea();
       rightCount[i] = count;
     }
     acc = Bounds3{};
@@ -121,7 +115,7 @@ size_t sahSplit(std::span<BuildPrim> prims, const Bounds3& bounds, const Bounds3
       const size_t nRight = rightCount[i];
       if (count == 0 || nRight == 0) continue;
       const float cost = s.traversalCost + s.intersectionCost *
-                                               (halfArea(acc) * static_cast<float>(count) +
+                                               (acc.halfSurfaceArea() * static_cast<float>(count) +
                                                 rightArea[i] * static_cast<float>(nRight)) /
                                                nodeArea;
       if (cost < bestCost) {

@@ -1,3 +1,4 @@
+// LIGHTLAB_ANSWER_FILE A5.3: the student tree holds this file as object code only.
 // Progressive refinement's shooting loop (Cohen et al. 1988; framework code):
 // Southwell's iteration, the largest unshot power shooting first, with each
 // row of form factors computed when its patch first shoots. It answers A5.3,

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "render/ray_offset.h"
 
 namespace ll::a6 {
 
@@ -44,15 +43,6 @@ float LightSampler::pdfSolidAngle(uint32_t prim, float distance, float cosLight)
   if (index < 0 || !(cosLight > 0.0f)) return 0.0f;
   const float pdfArea = 1.0f / (static_cast<float>(count_) * scene_.areaLights[static_cast<size_t>(index)].area);
   return pdfArea * distance * distance / cosLight;
-}
-
-bool visible(const Tracer& tracer, const ShadingPoint& x, const Vec3& wi, float distance) {
-  Ray ray;
-  ray.origin = offsetRayOrigin(x.position, faceTowards(x.ng, wi));
-  ray.dir = wi;
-  ray.tmin = 0.0f;
-  ray.tmax = std::isinf(distance) ? kInfinity : distance * (1.0f - 1e-4f);
-  return !tracer.occluded(ray);
 }
 
 }  // namespace ll::a6

@@ -67,6 +67,11 @@ struct Bounds3 {
   Vec3 center() const { return 0.5f * (min + max); }
   Vec3 extent() const { return empty() ? Vec3(0.0f) : max - min; }
   float diagonal() const { return glm::length(extent()); }
+  // Half the box's surface area, ex ey + ey ez + ez ex: what the surface area heuristic compares.
+  float halfSurfaceArea() const {
+    const Vec3 e = extent();
+    return e.x * e.y + e.y * e.z + e.z * e.x;
+  }
 };
 
 }  // namespace ll

@@ -1,5 +1,5 @@
-// The reference camera: it answers task A2.1, so the student tree holds this
-// file as object code only (tasks/framework_answer.h).
+// LIGHTLAB_ANSWER_FILE A2.1: the reference camera answers task A2.1, so the student
+// tree holds this file as object code only (tasks/framework_answer.h).
 #include "scene/camera.h"
 
 #include "tasks/framework_answer.h"

@@ -1,5 +1,7 @@
 #include "scene/material.h"
 
+#include "scene/texture_filter.h"
+
 namespace ll {
 
 Rgb Texture::eval(Vec2 uv) const {
@@ -11,20 +13,8 @@ Rgb Texture::eval(Vec2 uv) const {
       const auto iv = static_cast<long>(std::floor(uv.y * squares.y));
       return ((iu + iv) & 1) == 0 ? colorA : colorB;
     }
-    case Kind::Image: {
-      // Bilinear, repeating; texel centres at (i + 0.5) / size; v = 0 is the bottom row.
-      const int w = image->width(), h = image->height();
-      const float x = (uv.x - std::floor(uv.x)) * static_cast<float>(w) - 0.5f;
-      const float y = (1.0f - (uv.y - std::floor(uv.y))) * static_cast<float>(h) - 0.5f;
-      const float fx = std::floor(x), fy = std::floor(y);
-      const float tx = x - fx, ty = y - fy;
-      auto texel = [&](int i, int j) {
-        return image->at(((i % w) + w) % w, ((j % h) + h) % h);
-      };
-      const int ix = static_cast<int>(fx), iy = static_cast<int>(fy);
-      return (1 - ty) * ((1 - tx) * texel(ix, iy) + tx * texel(ix + 1, iy)) +
-             ty * ((1 - tx) * texel(ix, iy + 1) + tx * texel(ix + 1, iy + 1));
-    }
+    case Kind::Image:
+      return bilinearLookup(*image, uv);
   }
   return Rgb(1.0f);
 }
