@@ -13,6 +13,7 @@ rm -rf "$work"
 mkdir -p "$work"
 sandboxed=0
 [ "$(id -u)" -eq 0 ] && sandboxed=1
+export LIGHTLAB_SANDBOX_USER=${LIGHTLAB_SANDBOX_USER:-lightlab-sb-cheats}  # its own user: no other grading's processes are killed
 
 submit() {  # NAME: run the autograder on cheats/NAME (or on $work/sub_NAME if it exists)
   local name=$1 sub="$work/sub_$1" res="$work/res_$1"
@@ -53,8 +54,8 @@ PY
 no_sandbox_process_left() {
   [ "$sandboxed" -eq 1 ] || return 0
   # Zombies (already dead, waiting for a parent that is gone) do not count.
-  if ps -o stat= -u lightlab-sandbox 2>/dev/null | grep -qv '^Z'; then
-    ps -o pid,stat,etimes,cmd -u lightlab-sandbox | head
+  if ps -o stat= -u "$LIGHTLAB_SANDBOX_USER" 2>/dev/null | grep -qv '^Z'; then
+    ps -o pid,stat,etimes,cmd -u "$LIGHTLAB_SANDBOX_USER" | head
     echo "FAIL: $1: processes of the sandbox user outlive the grading"
     exit 1
   fi

@@ -14,6 +14,7 @@ tree=${1:?usage: per_task_test.sh STUDENT_TREE WORKDIR ASSIGNMENT}
 work=${2:?}
 assignment=${3:?}
 root=$(cd "$(dirname "$0")/../.." && pwd)
+export LIGHTLAB_SANDBOX_USER=${LIGHTLAB_SANDBOX_USER:-lightlab-sb-${assignment,,}}  # its own: gradings run side by side
 rm -rf "$work"
 mkdir -p "$work"
 spec=$(grep -l "\"assignment\": \"$assignment\"" "$root"/assignments/*/grading.json | head -1)
