@@ -38,9 +38,12 @@ out=$(cd "$out" && pwd)
 python3 - "$root" "$out" <<'PY'
 import fnmatch, os, re, shutil, subprocess, sys
 root, out = sys.argv[1], sys.argv[2]
+def git(*args):
+    return subprocess.run(["git", "-C", root, *args], check=True, capture_output=True).stdout.decode()
 try:
-    listed = subprocess.run(["git", "-C", root, "ls-files", "-z", "--cached", "--others", "--exclude-standard"],
-                            check=True, capture_output=True).stdout.decode().split("\0")
+    if os.path.realpath(git("rev-parse", "--show-toplevel").strip()) != os.path.realpath(root):
+        raise FileNotFoundError("not the root of a checkout")  # e.g. a tarball unpacked inside another repository
+    listed = git("ls-files", "-z", "--cached", "--others", "--exclude-standard").split("\0")
     files = [f for f in listed if f and os.path.isfile(os.path.join(root, f))]
 except (subprocess.CalledProcessError, FileNotFoundError):
     files = []

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <set>
 #include <string>
 
 #include <GLFW/glfw3.h>
@@ -16,6 +17,8 @@
 #include "gui/ray_inspector.h"
 #include "gui/viewport.h"
 #include "modules/registry.h"
+#include "tasks/task_catalog.h"
+#include "tasks/task_modes.h"
 
 namespace ll::gui {
 
@@ -291,6 +294,52 @@ void paneSection(AppState& app, int i) {
   ImGui::PopID();
 }
 
+// The student tree: per task, your code or its reference (the same switch as --reference).
+void tasksSection(AppState& app) {
+  if (!tasks::modulesEnabled() || !ImGui::CollapsingHeader("Tasks: yours or the reference")) return;
+  helpMarker(
+      "Each task runs your code, or the course's reference (object code in assignments/reference/lib).\n"
+      "Where your function is still a stub, its reference stands in and striped pixels mark it.\n"
+      "Tick a task to see its reference instead of your code (lightlab --reference ID on the command line).");
+  std::set<std::string> missing, violations;
+  for (int i = 0; i < kMaxPanes; ++i)
+    if (paneActive(app, i)) {
+      for (const auto& [id, what] : app.panes[static_cast<size_t>(i)].shown.missingTasks) missing.insert(id);
+      for (const auto& [id, what] : app.panes[static_cast<size_t>(i)].shown.taskViolations) violations.insert(id);
+    }
+  std::string assignment;
+  bool open = false;
+  const auto catalog = tasks::taskCatalog();
+  for (size_t t = 0; t < catalog.size(); ++t) {
+    const tasks::TaskInfo& info = catalog[t];
+    if (info.assignment() != assignment) {
+      if (open) ImGui::TreePop();
+      assignment = info.assignment();
+      open = ImGui::TreeNode(assignment.c_str());
+    }
+    if (!open) continue;
+    bool reference = tasks::mode(static_cast<int>(t)) == tasks::Mode::Reference;
+    ImGui::PushID(static_cast<int>(t));
+    if (ImGui::Checkbox("##reference", &reference)) {
+      tasks::setMode(static_cast<int>(t), reference ? tasks::Mode::Reference : tasks::Mode::Auto);
+      app.cameraChanged = true;  // every pane renders again
+      addMessage(app, std::string(info.id) + (reference ? ": the reference" : ": your code"), false);
+    }
+    ImGui::SameLine();
+    const char* state = reference                ? "reference"
+                        : violations.count(info.id) ? "breaks a rule"
+                        : missing.count(info.id)    ? "stub (reference shown)"
+                                                     : "yours";
+    const ImVec4 colour = reference                  ? ImVec4(0.6f, 0.8f, 1, 1)
+                          : violations.count(info.id) ? ImVec4(1, 0.4f, 0.4f, 1)
+                          : missing.count(info.id)    ? ImVec4(1, 0.4f, 0.9f, 1)
+                                                       : ImVec4(0.6f, 1, 0.6f, 1);
+    ImGui::TextColored(colour, "%s %s: %s", info.id, info.title, state);
+    ImGui::PopID();
+  }
+  if (open) ImGui::TreePop();
+}
+
 void presetSection(AppState& app) {
   if (!ImGui::CollapsingHeader("Preset")) return;
   ImGui::InputText("file", app.presetInput, sizeof app.presetInput);
@@ -362,6 +411,7 @@ void drawSidePanel(AppState& app, GLFWwindow* window, float width, float height)
   for (int i = 0; i < kMaxPanes; ++i)
     if (paneActive(app, i)) paneSection(app, i);
   rayTreeSection(app);
+  tasksSection(app);
   presetSection(app);
   viewSection(app, window);
   messagesSection(app);
