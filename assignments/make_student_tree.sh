@@ -79,7 +79,7 @@ fi
 # The references as object code.
 lib="$out/assignments/reference/lib"
 mkdir -p "$lib"
-cp "$build"/modules/reference/lightlab_*.so "$build/assignments/liblightlab_private.a" "$lib/"
+cp "$build"/modules/reference/lightlab_*.so "$build"/modules/reference/liblightlab_private.a "$lib/"
 cat > "$out/assignments/reference/README.md" <<'README'
 # The references, as object code
 
