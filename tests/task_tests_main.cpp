@@ -16,7 +16,7 @@
 //   <key> start <test>
 // when a test starts and
 //   <key> end {"test": ..., "status": "passed|failed|skipped", "failures": [...],
-//              "stubs": [...], "violations": {...}, "seconds": ...}
+//              "stubs": [...], "violations": {...}, "calls": [task IDs], "seconds": ...}
 // when it ends. Student code runs in this process but never learns the key,
 // so it cannot write a result; an exit, a crash or a hang in a test leaves
 // that test without an "end" line, and the grader fails it (and reruns the rest).
@@ -78,6 +78,7 @@ class TaskHarness : public testing::EmptyTestEventListener {
     else ll::tasks::setAllModes(ll::tasks::Mode::Auto);
     ll::takeTasksReported();
     ll::tasks::takeViolations();
+    ll::tasks::takeTasksCalled();
     start_ = std::chrono::steady_clock::now();
     send("start " + name(info));
   }
@@ -85,6 +86,7 @@ class TaskHarness : public testing::EmptyTestEventListener {
   void OnTestEnd(const testing::TestInfo& info) override {
     const std::set<std::string> stubs = ll::takeTasksReported();
     const std::map<std::string, std::string> violations = ll::tasks::takeViolations();
+    const std::vector<std::string> called = ll::tasks::takeTasksCalled();
     if (owner_ >= 0) {
       const std::string id = ll::tasks::taskCatalog()[static_cast<size_t>(owner_)].id;
       // Failures added here are the test's own (it is still the current test); this listener
@@ -109,6 +111,7 @@ class TaskHarness : public testing::EmptyTestEventListener {
                                  {"failures", failures},
                                  {"stubs", stubs},
                                  {"violations", violations},
+                                 {"calls", called},
                                  {"seconds", seconds}}
                       .dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
     ll::tasks::setAllModes(ll::tasks::Mode::Auto);

@@ -2,8 +2,9 @@
 // functions you write. Each lives in its own .cpp file between the markers of
 // its task ID; the pipeline (rasterizer.cpp) and the technique `blinn-phong`
 // (blinn_phong_technique.cpp) call them. Until you write one, its stub reports
-// the task as missing and a fallback keeps the rest working, so the tasks can
-// be done in any order. See README.md for the handout.
+// the task as missing and the task's reference (the course's solution, object
+// code) answers in its place, the pixels striped, so the tasks can be done in
+// any order. See README.md for the handout and the --reference switches.
 #pragma once
 
 #include "core/math.h"

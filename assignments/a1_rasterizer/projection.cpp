@@ -1,6 +1,4 @@
 // A1.1 Projection.
-#include <glm/gtc/matrix_transform.hpp>
-
 #include "a1_tasks.h"
 #include "render/student_task.h"
 

@@ -2,9 +2,9 @@
 // write. Each lives in its own .cpp file between the markers of its task ID;
 // the technique `whitted` (whitted_technique.cpp) calls them through the
 // framework's helpers in whitted_tracer.h. Until you write one, its stub
-// reports the task as missing and a simple stand-in keeps the rest running
-// (the pixels it touched are striped), so the tasks can be done in any order.
-// See README.md for the handout.
+// reports the task as missing and the task's reference (the course's solution,
+// object code) answers in its place, the pixels striped, so the tasks can be
+// done in any order. See README.md for the handout and the --reference switches.
 #pragma once
 
 #include "core/math.h"

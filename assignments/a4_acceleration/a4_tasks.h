@@ -2,9 +2,9 @@
 // KD-tree and an octree. The functions you write. Each lives in its own .cpp file between the
 // markers of its task ID; the accelerators `bvh`, `kdtree` and `octree`
 // (*_accelerator.cpp) call them. Until you write one, its stub reports the
-// task as missing and falls back to brute force (A4.1: one leaf holding
-// everything; A4.2-A4.4: test every primitive), so renders stay correct --
-// only slow. See README.md.
+// task as missing and the task's reference (the course's solution, object
+// code) answers in its place: the same picture. See README.md for the handout
+// and the --reference switches.
 #pragma once
 
 #include <cstddef>

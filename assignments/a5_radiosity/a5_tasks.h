@@ -1,8 +1,9 @@
 // Assignment 5 -- Radiosity. The three functions you write, each in its own
 // .cpp file between the markers of its task ID; the technique `radiosity`
 // and `lightlab radiosity` call them. Until you write one, its stub reports
-// the task as missing and a cruder stand-in keeps everything running (the
-// picture is striped), so the tasks can be done in any order. See README.md.
+// the task as missing and the task's reference (the course's solution, object
+// code) answers in its place, the picture striped, so the tasks can be done
+// in any order. See README.md for the handout and the --reference switches.
 #pragma once
 
 #include <vector>

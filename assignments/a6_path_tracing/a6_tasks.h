@@ -3,8 +3,9 @@
 // estimated by random paths. The three functions you write; each lives in
 // its own .cpp file between the markers of its task ID. The technique `path`
 // (path_technique.cpp, framework code worth reading) calls them. Until you
-// write one, its stub reports the task as missing (see README.md for what
-// each stub does meanwhile), so the tasks can be done in any order.
+// write one, its stub reports the task as missing and the task's reference
+// (the course's solution, object code) answers in its place, the pixels
+// striped, so the tasks can be done in any order (README.md: --reference).
 #pragma once
 
 #include "light_sampler.h"

@@ -62,7 +62,7 @@ GradingSpec loadGradingSpec(const std::string& path, const std::string& dataDir)
   for (size_t i = 0; i < tasks.size(); ++i) {
     const JsonNode task = tasks.at(i);
     task.requireObject();
-    task.allowOnly({"id", "title", "points", "file", "functions", "recursive", "forbidden", "tests"});
+    task.allowOnly({"id", "title", "points", "file", "functions", "recursive", "forbidden", "uses", "tests"});
     TaskSpec t;
     t.id = task.string("id");
     if (t.id.rfind(spec.assignment + ".", 0) != 0) task.child("id").fail("task IDs start with '" + spec.assignment + ".'");
@@ -71,6 +71,7 @@ GradingSpec loadGradingSpec(const std::string& path, const std::string& dataDir)
     t.file = task.string("file");
     t.functions = strings(task.child("functions"), "functions");
     if (task.has("forbidden")) t.forbidden = strings(task.child("forbidden"), "forbidden");
+    if (task.has("uses")) t.uses = strings(task.child("uses"), "uses");
     const JsonNode tests = task.child("tests");
     tests.requireArray();
     if (tests.size() == 0) tests.fail("a task needs at least one test");

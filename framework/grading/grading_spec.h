@@ -1,7 +1,8 @@
 // An assignment's grading spec: assignments/<dir>/grading.json lists the
 // tasks (ID, title, points, the file and functions the student writes,
 // "recursive" for a task that calls itself through the framework,
-// "forbidden": names the task's file must not use) and, per task, the tests
+// "forbidden": names the task's file must not use, "uses": the other tasks
+// its tests run, by their references) and, per task, the tests
 // that grade it:
 //
 //   {"kind": "unit"}                           the task's tests in lightlab_task_tests: every case
@@ -46,6 +47,7 @@ struct TaskSpec {
   std::string file;                    // the student's file, relative to the spec's folder
   std::vector<std::string> functions;  // what it defines (in ll::aN)
   std::vector<std::string> forbidden;  // names the file must not use (e.g. glm::lookAt for A1.1)
+  std::vector<std::string> uses;       // other tasks its tests run -- by their references when it is graded
   std::vector<TestSpec> tests;
 };
 

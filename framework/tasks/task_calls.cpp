@@ -1,6 +1,7 @@
 #include "tasks/task_calls.h"
 
 #include <array>
+#include <atomic>
 #include <bitset>
 #include <cstdint>
 #include <mutex>
@@ -15,6 +16,7 @@ constexpr size_t kMaxTasks = 64;
 thread_local bool tStubRan = false;
 thread_local std::array<uint16_t, kMaxTasks> tRunning{};
 
+std::atomic<uint64_t> gCalled{0};
 std::mutex gViolationsMutex;
 std::map<std::string, std::string> gViolations;
 }  // namespace
@@ -35,6 +37,19 @@ bool StudentCall::stubRan() const { return tStubRan; }
 bool studentCodeRunning(int task) { return task >= 0 && tRunning[static_cast<size_t>(task)] > 0; }
 
 void noteStubRan() { tStubRan = true; }
+
+void noteTaskCalled(int task) {
+  const uint64_t bit = uint64_t{1} << static_cast<unsigned>(task);
+  if (!(gCalled.load(std::memory_order_relaxed) & bit)) gCalled.fetch_or(bit, std::memory_order_relaxed);
+}
+
+std::vector<std::string> takeTasksCalled() {
+  const uint64_t called = gCalled.exchange(0);
+  std::vector<std::string> ids;
+  for (size_t i = 0; i < taskCatalog().size(); ++i)
+    if (called & (uint64_t{1} << i)) ids.emplace_back(taskCatalog()[i].id);
+  return ids;
+}
 
 void answerUsed(int task, const char* function) {
   if (!studentCodeRunning(task)) return;

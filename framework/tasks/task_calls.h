@@ -8,6 +8,7 @@
 
 #include <map>
 #include <string>
+#include <vector>
 
 #include "tasks/visibility.h"
 
@@ -33,6 +34,12 @@ class LIGHTLAB_FRAMEWORK_ONLY StudentCall {
 
 // Whether `task`'s student code is running on this thread.
 LIGHTLAB_FRAMEWORK_ONLY bool studentCodeRunning(int task);
+
+// Called by the dispatch on every call of a task function (any mode): what a
+// test uses, for the handouts' "builds on" lists. Cheap after the first call.
+LIGHTLAB_FRAMEWORK_ONLY void noteTaskCalled(int task);
+// The IDs of the tasks called since the last call, which clears the record.
+LIGHTLAB_FRAMEWORK_ONLY std::vector<std::string> takeTasksCalled();
 
 // Called by every stub (render/student_task.h): the running call's stub ran.
 LIGHTLAB_FRAMEWORK_ONLY void noteStubRan();

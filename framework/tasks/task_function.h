@@ -41,6 +41,7 @@ class TaskFunction<R(A...)> {
       : task_(requireTask(id)), id_(id), name_(name), recursive_(taskCatalog()[static_cast<size_t>(task_)].recursive) {}
 
   R operator()(A... args) const {
+    noteTaskCalled(task_);
     const Mode m = mode(task_);
     if (m == Mode::Reference) return reference()(args...);
     const Fn fn = student();
