@@ -80,6 +80,8 @@ TEST(A3_3_HardCases, AroundTheCriticalAngleFloatByFloat) {
       "hard case: glass to air, float by float around the critical angle: the reflectances stay finite and in "
       "[0, 1], and are 1 beyond it (total internal reflection), where cos(theta_t) would be the root of a "
       "negative number.");
+  // The control, well before the critical angle: most light leaves the glass.
+  ASSERT_LT(a3::fresnelDielectric(0.95f, 1.5f, 1.0f).unpolarized(), 0.2f) << "cos(theta_i) = 0.95, glass to air";
   aroundTheCriticalAngle([&](float cosI, int step) {
     const a3::FresnelTerms f = a3::fresnelDielectric(cosI, 1.5f, 1.0f);
     ASSERT_TRUE(std::isfinite(f.rs) && std::isfinite(f.rp)) << "NaN at cos " << cosI << " (" << step << " floats)";

@@ -361,7 +361,7 @@ TEST(A5_Radiosity, TheRasterizerShowsTheSameSolutionAsRayCasting) {
   EXPECT_GT(e.ssim, 0.98);
 }
 
-TEST(A5_3_Radiosity, EveryProgressivePassRedrawsTheWholePicture) {
+TEST(A5_Radiosity, EveryProgressivePassRedrawsTheWholePicture) {
   const std::vector<std::pair<std::string, std::string>> sets = {
       {"progressive", "true"}, {"patch_size", "0.09"}, {"hemicube_res", "12"}};
   std::vector<Image> passes;

@@ -62,12 +62,17 @@ class A6_1_CosineHemisphere : public testing::Test {
 };
 
 TEST_F(A6_1_CosineHemisphere, SamplesAreUnitDirectionsAboveTheHorizon) {
+  float lowest = 1.0f, highest = 0.0f;
   for (float a : {0.0f, 1e-7f, 0.25f, 0.5f, 0.9999999f})
     for (float b : {0.0f, 0.3f, 0.75f, 0.9999999f}) {
       const Vec3 d = a6::sampleCosineHemisphere(Vec2(a, b));
       EXPECT_NEAR(glm::length(d), 1.0f, 1e-5f) << a << ", " << b;
       EXPECT_GE(d.z, 0.0f) << a << ", " << b;
+      lowest = std::min(lowest, d.z);
+      highest = std::max(highest, d.z);
     }
+  // The control: the samples spread from the pole down towards the horizon (one fixed direction does not).
+  EXPECT_GT(highest - lowest, 0.5f) << "the samples' heights z span only [" << lowest << ", " << highest << "]";
 }
 
 TEST_F(A6_1_CosineHemisphere, DensityIsCosineOverPi) {
@@ -203,6 +208,8 @@ TEST_F(A6_2_NextEvent, DirectionalLightHasNoFalloff) {
 }
 
 TEST_F(A6_2_NextEvent, NothingFromBehindTheLightOrBelowTheSurface) {
+  // The control: the same light facing the floor, above it, does light it (an estimate of 0 is not enough).
+  ASSERT_GT(estimate(areaLight(), false).r, 0.0f);
   a6::LightSample up = areaLight();
   up.normal = Vec3(0.0f, 1.0f, 0.0f);  // emits away from the floor
   EXPECT_EQ(estimate(up, false), Rgb(0.0f));

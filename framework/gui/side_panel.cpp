@@ -296,7 +296,9 @@ void paneSection(AppState& app, int i) {
 
 // The student tree: per task, your code or its reference (the same switch as --reference).
 void tasksSection(AppState& app) {
-  if (!tasks::modulesEnabled() || !ImGui::CollapsingHeader("Tasks: yours or the reference")) return;
+  if (!tasks::modulesEnabled() ||
+      !ImGui::CollapsingHeader("Tasks: yours or the reference", ImGuiTreeNodeFlags_DefaultOpen))
+    return;
   helpMarker(
       "Each task runs your code, or the course's reference (object code in assignments/reference/lib).\n"
       "Where your function is still a stub, its reference stands in and striped pixels mark it.\n"
@@ -315,6 +317,11 @@ void tasksSection(AppState& app) {
     if (info.assignment() != assignment) {
       if (open) ImGui::TreePop();
       assignment = info.assignment();
+      // Open where the panes use this assignment's tasks (a stub or a rule broken is reported).
+      bool used = false;
+      for (const std::string& id : missing) used = used || id.rfind(assignment + ".", 0) == 0;
+      for (const std::string& id : violations) used = used || id.rfind(assignment + ".", 0) == 0;
+      if (used) ImGui::SetNextItemOpen(true, ImGuiCond_Once);
       open = ImGui::TreeNode(assignment.c_str());
     }
     if (!open) continue;
