@@ -14,6 +14,7 @@
 #include "cli/commands.h"
 #include "cli/scene_setup.h"
 #include "core/error.h"
+#include "core/files.h"
 #include "radiosity_scene.h"
 
 namespace ll::cli {
@@ -29,6 +30,7 @@ nlohmann::json vec(const Vec3& v) { return {v.x, v.y, v.z}; }
 
 // The residual history as a small SVG plot: log10(residual) against iteration.
 void writePlot(const a5::Solution& s, const std::string& title, const std::string& path) {
+  createParentDirectory(path);
   std::ofstream out(path);
   if (!out) throwUserError(path + ": cannot write the plot");
   constexpr double w = 640, h = 400, left = 70, right = 20, top = 40, bottom = 50;
@@ -145,6 +147,7 @@ Command addRadiosityCommand(CLI::App& app, const GlobalOptions& global) {
          {{"emitted", solved->energy.emitted}, {"absorbed", solved->energy.absorbed}, {"escaped", solved->energy.escaped}}},
         {"missing_tasks", solved->missingTasks},
         {"patches", patches}};
+    createParentDirectory(o->json);
     std::ofstream file(o->json);
     if (!file) throwUserError(o->json + ": cannot write");
     file << out.dump(1) << "\n";

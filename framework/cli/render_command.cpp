@@ -11,6 +11,7 @@
 #include "cli/commands.h"
 #include "cli/scene_setup.h"
 #include "core/error.h"
+#include "core/files.h"
 #include "core/progress.h"
 #ifdef LIGHTLAB_HAVE_GUI
 #include "gpu/offscreen_gl.h"
@@ -108,6 +109,7 @@ Command addRenderCommand(CLI::App& app, const GlobalOptions& global) {
 
     saveImage(job.frame().resolve(), o->output, ToneMap{o->exposure});
     if (!o->statsPath.empty()) {
+      createParentDirectory(o->statsPath);
       std::ofstream out(o->statsPath);
       if (!out) throwUserError(o->statsPath + ": cannot write statistics file");
       out << stats.toJson().dump(2) << "\n";

@@ -1,5 +1,7 @@
 #include "core/image.h"
 
+#include "core/files.h"
+
 #include <algorithm>
 #include <array>
 #include <cstdio>
@@ -89,6 +91,7 @@ Image loadPfm(const std::string& path) {
 }  // namespace
 
 void saveImage(const Image& image, const std::string& path, ToneMap tone) {
+  createParentDirectory(path);
   const std::string ext = lowerExtension(path);
   if (image.empty()) throwUserError(path + ": refusing to write an empty image");
   const int w = image.width(), h = image.height();

@@ -4,6 +4,7 @@
 #include <fstream>
 
 #include "core/error.h"
+#include "core/files.h"
 
 namespace ll::grading {
 
@@ -56,6 +57,7 @@ std::string escapeMarkup(const std::string& s, bool text) {
 }
 
 void writeTextFile(const std::string& path, const std::string& text) {
+  createParentDirectory(path);
   std::ofstream out(path, std::ios::binary);
   if (!out) throwUserError("cannot write " + path);
   out.write(text.data(), static_cast<std::streamsize>(text.size()));
