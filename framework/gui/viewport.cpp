@@ -152,10 +152,13 @@ std::vector<std::string> paneCaption(const AppState& app, int index) {
 // Banners at the bottom of a pane: a missing student task, a render error.
 void paneBanners(ImDrawList* dl, AppState& app, const PaneState& p, Rect r) {
   std::vector<std::string> lines;
-  for (const auto& [id, what] : p.shown.missingTasks)
-    lines.push_back("Task " + id + " not implemented: " + what +
-                    (p.shown.exactFallbacks.count(id) ? " (its reference stands in: the same picture)"
-                                                      : " (its reference stands in: striped pixels)"));
+  // One line per kind, not per task: the picture stays visible (each task's file is in the side panel).
+  std::vector<std::string> striped, same;
+  for (const auto& [id, what] : p.shown.missingTasks) (p.shown.exactFallbacks.count(id) ? same : striped).push_back(id);
+  if (!striped.empty())
+    lines.push_back("Stubs " + joinNames(striped, " ") + ": the reference stands in (striped)");
+  if (!same.empty())
+    lines.push_back("Stubs " + joinNames(same, " ") + ": the reference stands in (same picture)");
   for (const auto& [id, what] : p.shown.taskViolations) lines.push_back("Task " + id + ": " + what);
   if (!lines.empty())
     captionBox(app.overlayRects, dl, r.x, r.y + r.h, lines, IM_COL32(150, 20, 120, 230), r.w,
