@@ -13,6 +13,8 @@
 #include "core/error.h"
 #include "core/ray.h"
 #include "render/student_task.h"
+#include "tasks/task_catalog.h"
+#include "tasks/task_modes.h"
 
 namespace ll::testing_support {
 
@@ -28,6 +30,22 @@ inline uint32_t gradingSeed() {
 inline std::mt19937 gradingRng(uint32_t salt) {
   std::seed_seq seq{gradingSeed(), salt};
   return std::mt19937(seq);
+}
+
+// What `f` returns with task `id` run by its reference (then the task's mode is as
+// before): the expected values of tests on random inputs. In the solution tree the
+// reference is the very same code.
+template <class F>
+auto byReference(const char* id, F&& f) {
+  const int task = tasks::requireTask(id);
+  const tasks::Mode before = tasks::mode(task);
+  tasks::setMode(task, tasks::Mode::Reference);
+  struct Restore {
+    int task;
+    tasks::Mode mode;
+    ~Restore() { tasks::setMode(task, mode); }
+  } restore{task, before};
+  return f();
 }
 
 // A translation by whole units, in [-8, 8]^3, drawn from the grading seed: tests move
