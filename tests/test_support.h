@@ -48,6 +48,22 @@ auto byReference(const char* id, F&& f) {
   return f();
 }
 
+// The command that follows pixel (x, y) of `scene` rendered at width x height, with the running
+// test's task isolated (its suite names it), for a failure message a student can paste.
+inline std::string traceCommand(const std::string& scene, int x, int y, int width, int height,
+                                const std::string& technique = "raycast") {
+  std::string rel = scene;
+  const auto at = rel.rfind("/data/");
+  if (at != std::string::npos) rel = rel.substr(at + 1);
+  std::string isolate;
+  if (const testing::TestInfo* info = testing::UnitTest::GetInstance()->current_test_info()) {
+    const int task = tasks::taskOfTestSuite(info->test_suite_name());
+    if (task >= 0) isolate = std::string("--isolate ") + tasks::taskCatalog()[static_cast<size_t>(task)].id + " ";
+  }
+  return "build/lightlab " + isolate + "trace " + rel + " --pixel " + std::to_string(x) + " " + std::to_string(y) +
+         " --width " + std::to_string(width) + " --height " + std::to_string(height) + " -t " + technique + " --json";
+}
+
 // A translation by whole units, in [-8, 8]^3, drawn from the grading seed: tests move
 // their whole set-up by it (the answers do not change) so that their inputs are not
 // the ones the student tree shows.

@@ -714,7 +714,8 @@ TEST_P(A2_4_Scene, SpherePointLightEveryPixelMatchesBlinnPhong) {
       double t = 0.0, margin = 0.0;
       const bool hit = sphereHitD(ray, DVec3(0.0), 1.0, t, margin);
       if (margin < 1e-3) continue;  // silhouette pixels: either answer is fine
-      const std::string where = "pixel " + std::to_string(x) + "," + std::to_string(y);
+      const std::string where = "pixel " + std::to_string(x) + "," + std::to_string(y) + " (trace it: " +
+                                testing_support::traceCommand(scene.path, x, y, s.width, s.height) + ")";
       if (!hit) {
         ++background;
         EXPECT_EQ(r.image.at(x, y), Rgb(0.0f)) << where;
@@ -746,7 +747,8 @@ TEST_P(A2_5_Scene, ShadowQuadShadowIsAmbientOnly) {
   float brightestShadow = 0.0f, darkestLit = kInfinity;
   for (int y = 0; y < s.height; ++y)
     for (int x = 0; x < s.width; ++x) {
-      const std::string where = "pixel " + std::to_string(x) + "," + std::to_string(y);
+      const std::string where = "pixel " + std::to_string(x) + "," + std::to_string(y) + " (trace it: " +
+                                testing_support::traceCommand(scene.path, x, y, s.width, s.height) + ")";
       const DRay ray = cameraRayD(scene.camera, s.width, s.height, x + 0.5, y + 0.5);
       double tBall = 0.0, margin = 0.0;
       const bool hitBall = sphereHitD(ray, centre, radius, tBall, margin);
@@ -817,7 +819,8 @@ TEST_P(A2_3_Scene, TriangleFanCoveredWithoutHoles) {
         d = std::min(d, e.x * (p.y - a.y) - e.y * (p.x - a.x));  // left of a counter-clockwise edge
       }
       const Rgb& c = r.image.at(x, y);
-      const std::string where = "pixel " + std::to_string(x) + "," + std::to_string(y);
+      const std::string where = "pixel " + std::to_string(x) + "," + std::to_string(y) + " (trace it: " +
+                                testing_support::traceCommand(scene.path, x, y, s.width, s.height) + ")";
       if (d > 1e-3) {
         ++inside;
         if (c == kd) ++covered;

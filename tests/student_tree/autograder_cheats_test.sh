@@ -11,6 +11,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
 rm -rf "$work"
 mkdir -p "$work"
+export LIGHTLAB_AUTOGRADER_CCACHE=$work/ccache  # many gradings of the same files: compile each once
 sandboxed=0
 [ "$(id -u)" -eq 0 ] && sandboxed=1
 export LIGHTLAB_SANDBOX_USER=${LIGHTLAB_SANDBOX_USER:-lightlab-sb-cheats}  # its own user: no other grading's processes are killed

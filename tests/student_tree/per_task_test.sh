@@ -17,6 +17,7 @@ root=$(cd "$(dirname "$0")/../.." && pwd)
 export LIGHTLAB_SANDBOX_USER=${LIGHTLAB_SANDBOX_USER:-lightlab-sb-${assignment,,}}  # its own: gradings run side by side
 rm -rf "$work"
 mkdir -p "$work"
+export LIGHTLAB_AUTOGRADER_CCACHE=$work/ccache  # many gradings of the same files: compile each once
 spec=$(grep -l "\"assignment\": \"$assignment\"" "$root"/assignments/*/grading.json | head -1)
 folder=$(basename "$(dirname "$spec")")
 mapfile -t tasks < <(python3 -c 'import json,sys; [print(t["id"], t["file"], t["points"]) for t in json.load(open(sys.argv[1]))["tasks"]]' "$spec")
