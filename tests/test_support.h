@@ -64,6 +64,15 @@ inline std::string traceCommand(const std::string& scene, int x, int y, int widt
          " --width " + std::to_string(width) + " --height " + std::to_string(height) + " -t " + technique + " --json";
 }
 
+// A random unit vector (uniform on the sphere) from `rng`.
+inline Vec3 randomUnitVector(std::mt19937& rng) {
+  std::normal_distribution<float> g;
+  for (;;) {
+    const Vec3 v(g(rng), g(rng), g(rng));
+    if (glm::length(v) > 1e-3f) return glm::normalize(v);
+  }
+}
+
 // A translation by whole units, in [-8, 8]^3, drawn from the grading seed: tests move
 // their whole set-up by it (the answers do not change) so that their inputs are not
 // the ones the student tree shows.

@@ -15,14 +15,7 @@ namespace {
 
 using testing_support::byReference;
 using testing_support::gradingRng;
-
-Vec3 randomUnit(std::mt19937& rng) {
-  std::normal_distribution<float> g;
-  for (;;) {
-    const Vec3 v(g(rng), g(rng), g(rng));
-    if (glm::length(v) > 1e-3f) return glm::normalize(v);
-  }
-}
+using testing_support::randomUnitVector;
 
 TEST(A1_1_RandomInputs, AgreesWithTheReference) {
   std::mt19937 rng = gradingRng(101);
@@ -30,8 +23,8 @@ TEST(A1_1_RandomInputs, AgreesWithTheReference) {
   for (int i = 0; i < 200; ++i) {
     Camera c;
     c.eye = Vec3(u(rng), u(rng), u(rng));
-    c.target = c.eye + 3.0f * randomUnit(rng);
-    c.up = randomUnit(rng);
+    c.target = c.eye + 3.0f * randomUnitVector(rng);
+    c.up = randomUnitVector(rng);
     if (glm::length(glm::cross(glm::normalize(c.target - c.eye), c.up)) < 0.2f) continue;
     c.fovYDeg = fov(rng);
     c.width = 100 + static_cast<int>(rng() % 900);
@@ -77,8 +70,8 @@ TEST(A1_4_RandomInputs, AgreesWithTheReference) {
   std::mt19937 rng = gradingRng(104);
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
   for (int i = 0; i < 1000; ++i) {
-    const Vec3 n = randomUnit(rng);
-    Vec3 v = randomUnit(rng), l = randomUnit(rng);
+    const Vec3 n = randomUnitVector(rng);
+    Vec3 v = randomUnitVector(rng), l = randomUnitVector(rng);
     if (glm::dot(v, n) < 0.0f) v = -v;  // the viewer's side
     const Rgb irradiance(u(rng) * 5.0f, u(rng) * 5.0f, u(rng) * 5.0f);
     const float shininess = 1.0f + 200.0f * u(rng);

@@ -13,19 +13,12 @@ namespace {
 
 using testing_support::byReference;
 using testing_support::gradingRng;
-
-Vec3 randomUnit(std::mt19937& rng) {
-  std::normal_distribution<float> g;
-  for (;;) {
-    const Vec3 v(g(rng), g(rng), g(rng));
-    if (glm::length(v) > 1e-3f) return glm::normalize(v);
-  }
-}
+using testing_support::randomUnitVector;
 
 TEST(A3_1_RandomInputs, AgreesWithTheReference) {
   std::mt19937 rng = gradingRng(301);
   for (int i = 0; i < 2000; ++i) {
-    const Vec3 d = randomUnit(rng), n = randomUnit(rng);
+    const Vec3 d = randomUnitVector(rng), n = randomUnitVector(rng);
     const Vec3 ref = byReference("A3.1", [&] { return a3::reflect(d, n); });
     const Vec3 mine = a3::reflect(d, n);
     ASSERT_NEAR(glm::length(mine - ref), 0.0f, 1e-5f) << "d " << testing::PrintToString(d) << ", n "
@@ -37,8 +30,8 @@ TEST(A3_2_RandomInputs, AgreesWithTheReference) {
   std::mt19937 rng = gradingRng(302);
   std::uniform_real_distribution<float> index(1.0f, 2.5f);
   for (int i = 0; i < 2000; ++i) {
-    const Vec3 n = randomUnit(rng);
-    Vec3 d = randomUnit(rng);
+    const Vec3 n = randomUnitVector(rng);
+    Vec3 d = randomUnitVector(rng);
     if (glm::dot(d, n) > 0.0f) d = -d;  // arriving on the normal's side
     const float eta = i % 2 ? index(rng) : 1.0f / index(rng);
     Vec3 ref(0.0f), mine(0.0f);
@@ -73,8 +66,8 @@ TEST(A3_5_RandomInputs, OriginsLeaveOnTheRightSideByLittle) {
   std::mt19937 rng = gradingRng(305);
   std::uniform_real_distribution<float> scale(-5.0f, 5.0f);
   for (int i = 0; i < 2000; ++i) {
-    const Vec3 ng = randomUnit(rng), dir = randomUnit(rng);
-    const Vec3 p = std::pow(10.0f, scale(rng)) * randomUnit(rng);
+    const Vec3 ng = randomUnitVector(rng), dir = randomUnitVector(rng);
+    const Vec3 p = std::pow(10.0f, scale(rng)) * randomUnitVector(rng);
     const Ray r = a3::secondaryRay(p, ng, dir);
     const double side = glm::dot(glm::dvec3(r.origin) - glm::dvec3(p), glm::dvec3(ng));
     const double wanted = glm::dot(dir, ng) >= 0.0f ? 1.0 : -1.0;

@@ -63,6 +63,11 @@ struct RandomSystem {
       f.rowStart.push_back(static_cast<uint32_t>(f.column.size()));
     }
   }
+  std::vector<Rgb> emissions() const {
+    std::vector<Rgb> e;
+    for (const a5::Patch& p : patches) e.push_back(p.emission);
+    return e;
+  }
 };
 
 TEST(A5_2_RandomInputs, OneSweepAgreesWithTheReference) {
@@ -70,8 +75,7 @@ TEST(A5_2_RandomInputs, OneSweepAgreesWithTheReference) {
   for (int trial = 0; trial < 50; ++trial) {
     const RandomSystem s(rng, 5 + static_cast<uint32_t>(rng() % 40));
     const a5::RadiositySystem system{s.patches, s.f};
-    std::vector<Rgb> start;
-    for (const a5::Patch& p : s.patches) start.push_back(p.emission);
+    const std::vector<Rgb> start = s.emissions();
     std::vector<Rgb> ref = start, mine = start;
     const float changeRef = byReference("A5.2", [&] { return a5::gaussSeidelSweep(system, ref); });
     const float change = a5::gaussSeidelSweep(system, mine);
@@ -87,8 +91,7 @@ TEST(A5_3_RandomInputs, OneShotAgreesWithTheReference) {
   for (int trial = 0; trial < 50; ++trial) {
     const RandomSystem s(rng, 5 + static_cast<uint32_t>(rng() % 40));
     const a5::RadiositySystem system{s.patches, s.f};
-    std::vector<Rgb> start;
-    for (const a5::Patch& p : s.patches) start.push_back(p.emission);
+    const std::vector<Rgb> start = s.emissions();
     std::vector<Rgb> refB = start, refUnshot = start, b = start, unshot = start;
     for (int shot = 0; shot < 3; ++shot) {
       const int refShooter = byReference("A5.3", [&] { return a5::shootLargest(system, refB, refUnshot); });
