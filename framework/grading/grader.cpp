@@ -400,14 +400,17 @@ class Grader {
     std::string image, stats;
     nlohmann::json statsJson;
   };
+  // (byReference: the task too by its reference -- the picture its code must give.)
   Render render(const TaskSpec& t, const std::string& scene, const std::string& technique, const std::string& accel,
-                int width, int height, int spp, const nlohmann::json& set, const std::string& stem, double timeout) {
+                int width, int height, int spp, const nlohmann::json& set, const std::string& stem, double timeout,
+                bool byReference = false) {
     Render r;
     r.image = work_ + "/" + stem + ".pfm";
     r.stats = work_ + "/" + stem + ".stats.json";
     fs::remove(r.image);
     fs::remove(r.stats);
-    std::vector<std::string> argv = {o_.lightlab, "--quiet", "--isolate", t.id};
+    std::vector<std::string> argv = {o_.lightlab, "--quiet", byReference ? "--reference" : "--isolate",
+                                     byReference ? std::string("all") : t.id};
     if (o_.threads > 0) argv.insert(argv.end(), {"--threads", std::to_string(o_.threads)});
     argv.insert(argv.end(), {"render", scene, "-t", technique, "-a", accel, "--width", std::to_string(width), "--height",
                              std::to_string(height), "--seed", std::to_string(o_.seed), "-o", r.image, "--stats",
@@ -602,6 +605,26 @@ class Grader {
       r.status = codeVerdict(t, small, r.message);
       r.seconds = std::chrono::duration<double>(Clock::now() - start).count();
       return r;
+    }
+    // Speed means nothing without the right hits: the accelerators return brute force's hits bit for bit,
+    // so the picture must be the reference's, pixel for pixel.
+    if (ts >= 0.0) {
+      const Render ref = render(t, scenePath(s.small), "raycast", s.accelerator, 128, 128, 12, set,
+                                safeName(t.id + "_complexity_" + s.accelerator + "_reference"), o_.renderTimeout, true);
+      if (ref.run.succeeded()) {
+        const Image mine = loadImage(small.image), expected = loadImage(ref.image);
+        size_t differ = 0;
+        for (size_t i = 0; i < std::min(mine.pixels().size(), expected.pixels().size()); ++i)
+          differ += mine.pixels()[i] != expected.pixels()[i] ? 1 : 0;
+        if (differ > 0 || mine.pixels().size() != expected.pixels().size()) {
+          r.status = Status::Failed;
+          r.message = t.id + ": " + s.accelerator + "'s picture of " + s.small + " differs from the reference's in " +
+                      std::to_string(differ) + " of " + std::to_string(expected.pixels().size()) +
+                      " pixels: the traversal misses or changes hits, so its speed does not count";
+          r.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+          return r;
+        }
+      }
     }
     // Far beyond the allowed ratio is a fail: stop waiting there (the process also loads the mesh and
     // builds the structure: a KD-tree over 235k triangles takes seconds).
