@@ -2,10 +2,14 @@
 #pragma once
 
 #include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <cstdlib>
 #include <ostream>
 #include <random>
 #include <string>
+#include <vector>
 
 #include <glm/gtc/matrix_access.hpp>
 #include <gtest/gtest.h>
@@ -62,6 +66,48 @@ inline std::string traceCommand(const std::string& scene, int x, int y, int widt
   }
   return "build/lightlab " + isolate + "trace " + rel + " --pixel " + std::to_string(x) + " " + std::to_string(y) +
          " --width " + std::to_string(width) + " --height " + std::to_string(height) + " -t " + technique + " --json";
+}
+
+// A failing ray against one triangle or one sphere, as a scene file a student can trace: writes
+// $LIGHTLAB_CASES_DIR (default out/cases)/<test>.json and returns the `lightlab trace --ray`
+// command that follows the ray with the running test's task isolated. For failure messages
+// (GoogleTest evaluates them only when the check fails).
+inline std::string traceCase(const Ray& ray, const std::vector<Vec3>& triangle, const Vec3& centre = Vec3(0.0f),
+                             float radius = 0.0f) {
+  const char* dir = std::getenv("LIGHTLAB_CASES_DIR");
+  const std::string folder = dir && *dir ? dir : "out/cases";
+  std::string name = "case", isolate;
+  if (const testing::TestInfo* info = testing::UnitTest::GetInstance()->current_test_info()) {
+    name = std::string(info->test_suite_name()) + "." + info->name();
+    for (char& c : name)
+      if (c == '/') c = '_';
+    const int task = tasks::taskOfTestSuite(info->test_suite_name());
+    if (task >= 0) isolate = std::string("--isolate ") + tasks::taskCatalog()[static_cast<size_t>(task)].id + " ";
+  }
+  const std::string path = folder + "/" + name + ".json";
+  const auto num = [](float v) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.9g", static_cast<double>(v));
+    return std::string(b);
+  };
+  const auto vec = [&](const Vec3& v) { return "[" + num(v.x) + ", " + num(v.y) + ", " + num(v.z) + "]"; };
+  std::string object;
+  if (triangle.size() == 3)
+    object = R"({"type": "triangles", "name": "the triangle", "material": "grey", "positions": [)" + vec(triangle[0]) +
+             ", " + vec(triangle[1]) + ", " + vec(triangle[2]) + R"(], "indices": [[0, 1, 2]]})";
+  else
+    object = R"({"type": "sphere", "name": "the sphere", "material": "grey", "center": )" + vec(centre) +
+             ", \"radius\": " + num(radius) + "}";
+  std::error_code ec;
+  std::filesystem::create_directories(folder, ec);
+  std::ofstream(path) << R"({"description": "The failing case of )" << name << R"(: trace the ray with the command of the failure message.",
+  "camera": {"eye": )" << vec(ray.origin) << R"(, "target": )" << vec(ray.origin + ray.dir) << R"(, "up": [0.3, 1, 0.2], "fov_y_deg": 40, "width": 64, "height": 64},
+  "materials": {"grey": {"kd": [0.5, 0.5, 0.5]}},
+  "lights": [{"type": "directional", "direction": [0, -1, 0], "intensity": [1, 1, 1]}],
+  "objects": [)" << object << "]}\n";
+  return "trace it: build/lightlab " + isolate + "trace " + path + " --ray " + num(ray.origin.x) + " " +
+         num(ray.origin.y) + " " + num(ray.origin.z) + " " + num(ray.dir.x) + " " + num(ray.dir.y) + " " +
+         num(ray.dir.z) + " --json";
 }
 
 // A random unit vector (uniform on the sphere) from `rng`.

@@ -248,10 +248,11 @@ TEST_F(A2_2_RaySphere, AgreesWithFrameworkOnRandomRays) {
     Ray moved = r;
     moved.origin += testing_support::gradingOffset(22);
     const bool ref = intersectSphere(moved, c + testing_support::gradingOffset(22), 1.5f, r.tmin, r.tmax, tRef);
-    ASSERT_EQ(mine, ref) << i;
+    const auto trace = [&] { return testing_support::traceCase(moved, {}, c + testing_support::gradingOffset(22), 1.5f); };
+    ASSERT_EQ(mine, ref) << (ref ? "a hit missed: " : "a miss hit: ") << trace();
     if (mine) {
       ++hits;
-      ASSERT_NEAR(tMine, tRef, 1e-4f * std::max(1.0f, tRef)) << i;
+      ASSERT_NEAR(tMine, tRef, 1e-4f * std::max(1.0f, tRef)) << trace();
     }
   }
   EXPECT_GT(hits, 500);
@@ -362,12 +363,13 @@ TEST_F(A2_3_RayTriangle, AgreesWithFrameworkAwayFromEdges) {
     ++checked;
     float t = 0.0f, b1 = 0.0f, b2 = 0.0f;
     const bool mine = a2::rayTriangle(r, p0, p1, p2, t, b1, b2);
-    ASSERT_EQ(mine, ref) << i;
+    const auto trace = [&] { return testing_support::traceCase(r, {p0, p1, p2}); };
+    ASSERT_EQ(mine, ref) << (ref ? "a hit missed: " : "a miss hit: ") << trace();
     if (!mine) continue;
     ++hits;
-    ASSERT_NEAR(t, tRef, 1e-4f * std::max(1.0f, tRef)) << i;
-    ASSERT_NEAR(b1, r1, 1e-4f) << i;
-    ASSERT_NEAR(b2, r2, 1e-4f) << i;
+    ASSERT_NEAR(t, tRef, 1e-4f * std::max(1.0f, tRef)) << trace();
+    ASSERT_NEAR(b1, r1, 1e-4f) << trace();
+    ASSERT_NEAR(b2, r2, 1e-4f) << trace();
   }
   EXPECT_GT(checked, 2800);
   EXPECT_GT(hits, 100);

@@ -333,6 +333,7 @@ class Grader {
       std::string running;
       std::set<std::string> finished;
       ChildSpec c = child({o_.taskTests, "--gtest_filter=" + filter, "--gtest_color=no"}, o_.groupTimeout);
+      c.env.push_back("LIGHTLAB_CASES_DIR=" + work_ + "/cases");  // failing rays as scenes to trace
       c.channelKey = randomKey();
       const double perTest = o_.testTimeout;
       c.onLine = [&](const std::string& line) {
