@@ -281,14 +281,19 @@ TEST(Image, SavingEmptyImageThrows) {
   EXPECT_THROW(saveImage(Image(), tempPath("empty.pfm")), UserError);
 }
 
-TEST(Image, WritingToMissingFolderThrowsNamingPath) {
-  const std::string path = (fs::path(testing::TempDir()) / "no_such_dir_ll" / "x" / "out.png").string();
+TEST(Image, WritingMakesMissingFoldersAndAnImpossibleOneThrowsNamingPath) {
+  const fs::path base = fs::path(testing::TempDir()) / "no_such_dir_ll";
+  fs::remove_all(base);
+  saveImage(Image(2, 2), (base / "x" / "out.png").string());  // `-o out/a2.png` in a fresh checkout
+  EXPECT_TRUE(fs::exists(base / "x" / "out.png"));
+  const std::string path = (base / "x" / "out.png" / "below_a_file.png").string();
   try {
     saveImage(Image(2, 2), path);
     FAIL() << "expected UserError";
   } catch (const UserError& e) {
     EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
   }
+  fs::remove_all(base);
 }
 
 TEST(Image, LoadingMissingFileNamesPath) {

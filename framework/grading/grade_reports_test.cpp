@@ -81,7 +81,10 @@ TEST(GradeReports, GradescopeJUnitAndHtmlAgreeWithTheScores) {
   const std::string html = readTextFile((dir / "report.html").string());
   EXPECT_NE(html.find("70 / 100"), std::string::npos);
   EXPECT_NE(html.find("Sample &lt;&amp;&gt;"), std::string::npos);
-  EXPECT_THROW(writeJUnitReport(r, (dir / "missing" / "junit.xml").string()), UserError);
+  // A missing folder is made; one that cannot be (below a file) is an error naming the path.
+  writeJUnitReport(r, (dir / "missing" / "junit.xml").string());
+  EXPECT_TRUE(fs::exists(dir / "missing" / "junit.xml"));
+  EXPECT_THROW(writeJUnitReport(r, (dir / "report.html" / "junit.xml").string()), UserError);
   fs::remove_all(dir);
 }
 
