@@ -116,4 +116,13 @@ expect sleep_loop 'd["score"] == 0' '"did not finish within 4 s" in output("A2.1
 submit stderr_flood
 expect stderr_flood 'd["score"] == 0' 'size < 1_000_000'
 
-echo "autograder: 10 dishonest or broken submissions score what they deserve; none outlives the grading"
+# 11. A2.2 as a lookup table of the inputs the student's own tests use (seed 1), used only when graded:
+# against the seed the student tree shows it would earn points; against the autograder's own, none.
+mkdir -p "$work/sub_lookup_table_seen"
+cp "$here/cheats/lookup_table/ray_sphere.cpp" "$work/sub_lookup_table_seen/"
+LIGHTLAB_GRADING_SEED=1 submit lookup_table_seen
+expect lookup_table_seen 'score("A2.2") > 10'
+LIGHTLAB_GRADING_SEED=987654 submit lookup_table
+expect lookup_table 'd["score"] == 0'
+
+echo "autograder: 11 dishonest or broken submissions score what they deserve; none outlives the grading"
