@@ -1,4 +1,5 @@
-// lightlab gui [SCENE] [--preset FILE] [--slides DECK.md [--slide N]] [--screenshot FILE --frames N]
+// lightlab gui [SCENE] [--preset FILE] [--assignment AN] [--[no-]watch] [--slides DECK.md [--slide N]]
+//              [--screenshot FILE --frames N]
 #include <memory>
 
 #include "cli/commands.h"
@@ -27,6 +28,12 @@ Command addGuiCommand(CLI::App& app, const GlobalOptions& global) {
       ->check(CLI::Range(240, 16384));
   cmd->add_option("--ui-scale", o->uiScale, "UI scale (times the monitor's content scale), e.g. 2 for projectors")
       ->check(CLI::Range(0.5, 4.0));
+  cmd->add_option("--assignment", o->assignment,
+                  "Focus on one assignment (A1 ... A6): its handout's scene and techniques running your code, "
+                  "its tasks in the banners, every other task by its reference");
+  cmd->add_flag_callback("--watch", [o] { o->watch = 1; },
+                         "Rebuild and reload your code when you save a task's file (the default in the student tree)");
+  cmd->add_flag_callback("--no-watch", [o] { o->watch = 0; }, "Do not rebuild on save");
   return [o, &global]() {
     (void)global;
     const int status = gui::runGui(*o);

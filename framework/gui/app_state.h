@@ -19,6 +19,7 @@
 #include "gui/background_worker.h"
 #include "gui/display_image.h"
 #include "gui/gl_texture.h"
+#include "gui/hot_reload.h"
 #include "gui/pane_renderer.h"
 #include "gui/presenter.h"
 #include "gui/ray_inspector.h"
@@ -37,6 +38,7 @@ struct PaneState {
   PaneView view = PaneView::Image;
   std::unique_ptr<PaneRenderer> renderer = std::make_unique<PaneRenderer>();
   bool dirty = true;  // settings changed since the last submit
+  bool bannerOpen = false;  // the student-task banner under the picture, unfolded (one line per task)
 
   PaneSnapshot shown;  // copied from the renderer once per UI frame
   GlTexture texture;
@@ -117,6 +119,11 @@ struct AppState {
   bool loadKeepsCamera = false;         // a reload keeps the view; opening a new scene resets it
   std::vector<std::string> sceneFiles;  // the file list of the "open" menu
   char pathInput[512] = {};
+
+  // --- the student tree --------------------------------------------------------
+  std::string assignment;            // in focus ("A2"; empty = all): banners and captions list its tasks
+  std::vector<int> focusReferences;  // tasks the focus switched to their reference (restored on a new focus)
+  HotReloadState hotReload;          // --watch: rebuild and reload the student's code on save
 
   // --- view ------------------------------------------------------------------
   Camera camera;  // shared by every pane

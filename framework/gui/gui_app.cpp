@@ -21,11 +21,15 @@
 #include "core/error.h"
 #include "gpu/offscreen_gl.h"
 #include "gui/app_actions.h"
+#include "gui/assignment_focus.h"
+#include "gui/hot_reload.h"
 #include "gui/presenter.h"
 #include "gui/screenshot.h"
 #include "gui/side_panel.h"
 #include "gui/slide_panel.h"
 #include "gui/viewport.h"
+#include "tasks/crash_guard.h"
+#include "tasks/task_modes.h"
 
 namespace ll::gui {
 
@@ -106,6 +110,7 @@ void updateApp(AppState& app) {
   takeSlideRequest(app);
   pollSceneLoad(app);
   watchSceneFile(app);
+  updateHotReload(app);
   submitPanes(app);
   refreshPanes(app);
   refreshRayTree(app);
@@ -157,6 +162,14 @@ int runGui(const GuiOptions& options) {
   if (!options.slides.empty()) deck = loadDeck(options.slides);
   if (!options.scene.empty() && !fs::exists(options.scene))
     throwUserError(options.scene + ": cannot open file");
+  if (!options.assignment.empty()) {
+    const auto names = assignmentNames();
+    if (std::find(names.begin(), names.end(), options.assignment) == names.end())
+      throwUserError("--assignment " + options.assignment + ": no such assignment (allowed: " + joinNames(names, ", ") + ")");
+    if (assignmentPresetPath(options.assignment).empty())
+      throwUserError("--assignment " + options.assignment + ": its preset data/presets/assignments/" + options.assignment +
+                     ".json is missing");
+  }
 
   glfwSetErrorCallback(onGlfwError);
   if (!glfwInit())
@@ -206,9 +219,16 @@ int runGui(const GuiOptions& options) {
       app.uiScale = kPresenterUiScale;
       openDeck(app, std::move(*deck), options.slide - 1);
     }
+    startHotReload(app, options.watch != 0);
+    if (tasks::modulesEnabled()) tasks::enableCrashGuard();  // a crash in student code stops its pane only
+    if (options.watch == 1 && app.hotReload.phase == HotReloadState::Phase::Off)
+      addMessage(app, "--watch reloads task modules, which only the student tree builds (LIGHTLAB_SOLUTION=OFF)");
+    // The assignment's preset, unless a preset or scene was named (then only the focus).
+    const bool assignmentPreset = !options.assignment.empty() && !preset && options.scene.empty() && !deck;
+    if (!options.assignment.empty()) focusAssignment(app, options.assignment, assignmentPreset);
     if (!options.scene.empty())
       openScene(app, options.scene, preset && preset->camera);
-    else if (!preset && app.presenter.applied < 0)
+    else if (!preset && app.presenter.applied < 0 && !assignmentPreset)
       openScene(app, defaultScenePath());
     if (options.uiScale > 0.0f) app.uiScale = options.uiScale;
     std::snprintf(app.pathInput, sizeof app.pathInput, "%s", options.scene.c_str());

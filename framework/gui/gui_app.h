@@ -20,6 +20,8 @@ struct GuiOptions {
   int windowWidth = 1280, windowHeight = 800;
   float uiScale = 0.0f;                   // 0 = keep the preset's (or 1)
   std::vector<std::string> sceneFolders;  // where the "open" list looks for scenes
+  std::string assignment;  // "A2": open on its preset, banners name its tasks only (empty = all)
+  int watch = -1;          // rebuild and reload the student's code on save: 1 on, 0 off, -1 = on in the student tree
 };
 
 // Runs until the window closes. Returns the process exit status. Throws

@@ -10,6 +10,7 @@
 #include "core/timer.h"
 #include "modules/registry.h"
 #include "render/cost_image.h"
+#include "tasks/task_modules.h"
 
 namespace ll::gui {
 
@@ -135,12 +136,15 @@ void PaneRenderer::render(const RenderRequest& request, uint64_t id) {
   s.error.clear();
   s.missingTasks.clear();
   s.taskViolations.clear();
+  s.tasksRan.clear();
   s.passes = 0;
   s.seconds = 0.0;
 
   // The accelerator: rebuilt only when the scene or its own settings change.
   const AcceleratorInfo& accelInfo = findAccelerator(request.accelerator);
-  const std::string key = std::to_string(request.sceneVersion) + "|" + accelInfo.name + "|" +
+  // A hot reload (tasks::studentModuleGeneration) may have replaced the student's build code.
+  const std::string key = std::to_string(request.sceneVersion) + "|" +
+                          std::to_string(tasks::studentModuleGeneration()) + "|" + accelInfo.name + "|" +
                           request.accelParams.toJson().dump();
   if (key != accelKey_ || !accel_) {
     s.phase = PaneSnapshot::Phase::Building;
@@ -194,6 +198,7 @@ void PaneRenderer::render(const RenderRequest& request, uint64_t id) {
       s.missingTasks = job.taskLog().missing();
       s.exactFallbacks = job.taskLog().exact();
       s.taskViolations = job.taskLog().violations();
+      s.tasksRan = job.taskLog().ran();
       if (!preview && done == 1) lastPassSeconds_ = s.seconds;
       publish(s);
     });

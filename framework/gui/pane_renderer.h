@@ -58,6 +58,7 @@ struct PaneSnapshot {
   std::map<std::string, std::string> missingTasks;  // student task id -> what
   std::set<std::string> exactFallbacks;  // missing tasks whose reference gives the same picture
   std::map<std::string, std::string> taskViolations;  // task id -> the rule its code broke
+  std::map<std::string, bool> tasksRan;  // student tasks the render called -> answered by the reference
   std::string error;                     // set when phase == Failed
 };
 

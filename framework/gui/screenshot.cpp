@@ -59,6 +59,7 @@ std::string saveScreenshotSidecar(const AppState& app, const std::string& path, 
             {"rect", rect(app.paneRects[static_cast<size_t>(i)])},
             {"missing_tasks", p.shown.missingTasks},
             {"task_violations", p.shown.taskViolations},
+            {"tasks_ran", p.shown.tasksRan},  // task id -> answered by the reference
             {"error", p.shown.error},
             {"params", p.techniqueParams.toJson()},
             {"view", viewName(p.view)},
@@ -99,6 +100,13 @@ std::string saveScreenshotSidecar(const AppState& app, const std::string& path, 
                     {"first_frame_ms", 1e3 * ft.firstSeconds},
                     {"mean_work_ms", ft.frames > 1 ? 1e3 * ft.sumSeconds / (ft.frames - 1) : 0.0},
                     {"max_work_ms", 1e3 * ft.maxSeconds}};
+  j["assignment"] = app.assignment;
+  const HotReloadState& h = app.hotReload;
+  j["reload"] = {{"phase", hotReloadPhaseName(h.phase)},
+                 {"reloads", h.reloads},
+                 {"error", h.phase == HotReloadState::Phase::Failed ? h.last.firstError.oneLine() : ""},
+                 {"build_seconds", h.buildSeconds},
+                 {"latency_seconds", h.latencySeconds}};
   j["widgets"] = json::object();
   for (const auto& [name, r] : app.widgetRects) j["widgets"][name] = rect(r);
   j["overlays"] = json::array();

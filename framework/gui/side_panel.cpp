@@ -13,6 +13,8 @@
 
 #include "core/error.h"
 #include "gui/app_actions.h"
+#include "gui/assignment_focus.h"
+#include "gui/hot_reload.h"
 #include "gui/param_widgets.h"
 #include "gui/ray_inspector.h"
 #include "gui/viewport.h"
@@ -294,21 +296,41 @@ void paneSection(AppState& app, int i) {
   ImGui::PopID();
 }
 
-// The student tree: per task, your code or its reference (the same switch as --reference).
-void tasksSection(AppState& app) {
-  if (!tasks::modulesEnabled() ||
-      !ImGui::CollapsingHeader("Tasks: yours or the reference", ImGuiTreeNodeFlags_DefaultOpen))
-    return;
-  helpMarker(
-      "Each task runs your code, or the course's reference (object code in assignments/reference/lib).\n"
-      "Where your function is still a stub, its reference stands in and striped pixels mark it.\n"
-      "Tick a task to see its reference instead of your code (lightlab --reference ID on the command line).");
+// The student tree, at the top: the assignment in focus, the hot-reload
+// status (build errors), and per task your code or its reference (the same
+// switch as --reference).
+void yourCodeSection(AppState& app) {
+  // The solution tree has no student code: only the assignment picker.
+  const bool student = tasks::modulesEnabled();
+  if (!ImGui::CollapsingHeader(student ? "Your code" : "Assignment", student ? ImGuiTreeNodeFlags_DefaultOpen : 0)) return;
+  const std::string current = app.assignment.empty() ? std::string("all") : app.assignment;
+  if (ImGui::BeginCombo("assignment", current.c_str())) {
+    recordWindow(app, "assignment.list");
+    if (ImGui::Selectable("all", app.assignment.empty())) focusAssignment(app, "");
+    recordWidget(app, "assignment:all");
+    for (const std::string& a : assignmentNames()) {
+      if (ImGui::Selectable(a.c_str(), a == app.assignment)) focusAssignment(app, a);
+      recordWidget(app, "assignment:" + a);
+    }
+    ImGui::EndCombo();
+  }
+  recordWidget(app, "assignment");
+  helpMarker("Focus on one assignment: its scene and techniques (the handout's), its tasks in the banners,\n"
+             "every other assignment's tasks by their reference.");
+  if (!student) return;
+  drawHotReloadStatus(app);
+
   std::set<std::string> missing, violations;
   for (int i = 0; i < kMaxPanes; ++i)
     if (paneActive(app, i)) {
       for (const auto& [id, what] : app.panes[static_cast<size_t>(i)].shown.missingTasks) missing.insert(id);
       for (const auto& [id, what] : app.panes[static_cast<size_t>(i)].shown.taskViolations) violations.insert(id);
     }
+  ImGui::TextDisabled("Tick a task to see its reference:");
+  helpMarker(
+      "Each task runs your code, or the course's reference (object code in assignments/reference/lib).\n"
+      "Where your function is still a stub, its reference stands in and striped pixels mark it.\n"
+      "Tick a task to see its reference instead of your code (lightlab --reference ID on the command line).");
   std::string assignment;
   bool open = false;
   const auto catalog = tasks::taskCatalog();
@@ -317,8 +339,8 @@ void tasksSection(AppState& app) {
     if (info.assignment() != assignment) {
       if (open) ImGui::TreePop();
       assignment = info.assignment();
-      // Open where the panes use this assignment's tasks (a stub or a rule broken is reported).
-      bool used = false;
+      // Open the assignment in focus, and where the panes use an assignment's tasks (a stub or a rule broken).
+      bool used = assignment == app.assignment;
       for (const std::string& id : missing) used = used || id.rfind(assignment + ".", 0) == 0;
       for (const std::string& id : violations) used = used || id.rfind(assignment + ".", 0) == 0;
       if (used) ImGui::SetNextItemOpen(true, ImGuiCond_Once);
@@ -332,6 +354,7 @@ void tasksSection(AppState& app) {
       app.cameraChanged = true;  // every pane renders again
       addMessage(app, std::string(info.id) + (reference ? ": the reference" : ": your code"), false);
     }
+    recordWidget(app, std::string("task:") + info.id);
     ImGui::SameLine();
     const char* state = reference                ? "reference"
                         : violations.count(info.id) ? "breaks a rule"
@@ -341,7 +364,9 @@ void tasksSection(AppState& app) {
                           : violations.count(info.id) ? ImVec4(1, 0.4f, 0.4f, 1)
                           : missing.count(info.id)    ? ImVec4(1, 0.4f, 0.9f, 1)
                                                        : ImVec4(0.6f, 1, 0.6f, 1);
-    ImGui::TextColored(colour, "%s %s: %s", info.id, info.title, state);
+    ImGui::PushStyleColor(ImGuiCol_Text, colour);
+    ImGui::TextWrapped("%s %s: %s", info.id, info.title, state);
+    ImGui::PopStyleColor();
     ImGui::PopID();
   }
   if (open) ImGui::TreePop();
@@ -412,13 +437,13 @@ void drawSidePanel(AppState& app, GLFWwindow* window, float width, float height)
   app.widgetRects.clear();  // only what this frame draws
   recordWindow(app, "panel");
   ImGui::PushItemWidth(-ImGui::GetFontSize() * 9.0f);
+  yourCodeSection(app);
   sceneSection(app);
   cameraSection(app);
   layoutSection(app);
   for (int i = 0; i < kMaxPanes; ++i)
     if (paneActive(app, i)) paneSection(app, i);
   rayTreeSection(app);
-  tasksSection(app);
   presetSection(app);
   viewSection(app, window);
   messagesSection(app);

@@ -96,6 +96,11 @@ std::string formatRate(double raysPerSecond) {
   return buf;
 }
 
+// Whether task `id` belongs to the assignment in focus (all, with no focus).
+bool inFocus(const AppState& app, const std::string& id) {
+  return app.assignment.empty() || id.rfind(app.assignment + ".", 0) == 0;
+}
+
 std::vector<std::string> paneCaption(const AppState& app, int index) {
   const PaneState& p = app.panes[static_cast<size_t>(index)];
   const PaneSnapshot& s = p.shown;
@@ -108,6 +113,14 @@ std::vector<std::string> paneCaption(const AppState& app, int index) {
     lines.push_back(std::string(1, paneLetter(index)) + "  " + p.technique + "  /  " +
                     p.accelerator);
   }
+  // The student tree: whose code this picture ran, for the tasks in focus.
+  std::vector<std::string> yours, reference;
+  for (const auto& [id, byReference] : s.tasksRan)
+    if (inFocus(app, id)) (byReference ? reference : yours).push_back(id);
+  if (!yours.empty() || !reference.empty())
+    lines.push_back((yours.empty() ? std::string() : "your " + joinNames(yours, " ")) +
+                    (yours.empty() || reference.empty() ? "" : "  |  ") +
+                    (reference.empty() ? std::string() : "reference " + joinNames(reference, " ")));
   char buf[160];
   switch (s.phase) {
     case PaneSnapshot::Phase::Building:
@@ -149,25 +162,82 @@ std::vector<std::string> paneCaption(const AppState& app, int index) {
   return lines;
 }
 
-// Banners at the bottom of a pane: a missing student task, a render error.
-void paneBanners(ImDrawList* dl, AppState& app, const PaneState& p, Rect r) {
-  std::vector<std::string> lines;
-  // One line per kind, not per task: the picture stays visible (each task's file is in the side panel).
-  std::vector<std::string> striped, same;
-  for (const auto& [id, what] : p.shown.missingTasks) (p.shown.exactFallbacks.count(id) ? same : striped).push_back(id);
-  if (!striped.empty())
-    lines.push_back("Stubs " + joinNames(striped, " ") + ": the reference stands in (striped)");
-  if (!same.empty())
-    lines.push_back("Stubs " + joinNames(same, " ") + ": the reference stands in (same picture)");
-  for (const auto& [id, what] : p.shown.taskViolations) lines.push_back("Task " + id + ": " + what);
-  if (!lines.empty())
-    captionBox(app.overlayRects, dl, r.x, r.y + r.h, lines, IM_COL32(150, 20, 120, 230), r.w,
-               Anchor::Bottom);
+// The student-task banner of a pane, shown under its picture (never over it):
+// one line naming the stubs and broken rules of the assignment in focus, or,
+// unfolded by a click, one line per task.
+std::vector<std::string> bannerLines(const AppState& app, const PaneState& p) {
+  std::vector<std::string> striped, same, broken, lines;
+  for (const auto& [id, what] : p.shown.missingTasks)
+    if (inFocus(app, id)) (p.shown.exactFallbacks.count(id) ? same : striped).push_back(id);
+  for (const auto& [id, what] : p.shown.taskViolations)
+    if (inFocus(app, id)) broken.push_back(id);
+  if (striped.empty() && same.empty() && broken.empty()) return lines;
+  if (!p.bannerOpen) {  // one line, cut to the width where drawn (oneLine)
+    std::string line = "[+]";
+    if (!striped.empty()) line += " Stubs " + joinNames(striped, " ") + " (striped)";
+    if (!same.empty()) line += " Stubs " + joinNames(same, " ");
+    if (!broken.empty()) line += " Rule broken: " + joinNames(broken, " ");
+    lines.push_back(line + " -- click for details");
+    return lines;
+  }
+  lines.emplace_back("[-] Still stubs here (click to fold):");
+  for (const auto& [id, what] : p.shown.missingTasks)
+    if (inFocus(app, id)) {
+      // "camera rays (assignments/a2_raycasting/camera_ray.cpp)" -> "camera rays, camera_ray.cpp"
+      std::string shown = what;
+      const auto open = shown.find(" ("), slash = shown.rfind('/');
+      if (open != std::string::npos && slash != std::string::npos && slash > open && shown.back() == ')')
+        shown = shown.substr(0, open) + ", " + shown.substr(slash + 1, shown.size() - slash - 2);
+      lines.push_back(id + " " + shown + (p.shown.exactFallbacks.count(id) ? ": reference shown" : ": reference shown, striped"));
+    }
+  for (const auto& [id, what] : p.shown.taskViolations)
+    if (inFocus(app, id)) lines.push_back(id + ": " + what);
+  return lines;
+}
+
+// `text` cut to fit `width` pixels on one line (with "..." when cut).
+std::string oneLine(const std::string& text, float width) {
+  if (ImGui::CalcTextSize(text.c_str()).x <= width) return text;
+  std::string cut = text;
+  while (!cut.empty() && ImGui::CalcTextSize((cut + "...").c_str()).x > width) cut.pop_back();
+  return cut + "...";
+}
+
+// The banner's lines as drawn `width` wide: folded, one line however narrow.
+std::vector<std::string> bannerLinesAt(const AppState& app, const PaneState& p, float width) {
+  std::vector<std::string> lines = bannerLines(app, p);
+  if (!p.bannerOpen && lines.size() == 1) lines[0] = oneLine(lines[0], width - 8.0f * ImGui::GetIO().FontGlobalScale - 2.0f);
+  return lines;
+}
+
+// Height of a captionBox of `lines` wrapped to `width` (0 for no lines).
+float captionHeight(const std::vector<std::string>& lines, float width) {
+  if (lines.empty()) return 0.0f;
+  const float pad = 4.0f * ImGui::GetIO().FontGlobalScale;
+  float height = 2 * pad;
+  for (const std::string& l : lines) height += ImGui::CalcTextSize(l.c_str(), nullptr, false, std::max(width - 2 * pad, 1.0f)).y;
+  return height + 2.0f;
+}
+
+// The banner under the image rectangle r, `width` wide from r.x (the space was
+// kept free: bannerSpace), and a failed render's error over the image.
+void paneBanners(ImDrawList* dl, AppState& app, int index, Rect r, float x, float width) {
+  const PaneState& p = app.panes[static_cast<size_t>(index)];
+  const auto lines = bannerLinesAt(app, p, width);
+  if (!lines.empty()) {
+    const float h = captionBox(app.overlayRects, dl, x, r.y + r.h + 2.0f, lines, IM_COL32(150, 20, 120, 230), width);
+    app.widgetRects[std::string("pane.") + paneLetter(index) + ".banner"] = {x, r.y + r.h + 2.0f, width, h};
+  }
   if (p.shown.phase == PaneSnapshot::Phase::Failed) {
     const float h = ImGui::GetTextLineHeight() + 8.0f;
     captionBox(app.overlayRects, dl, r.x, r.y + r.h / 2 - h / 2, {"Error: " + p.shown.error},
                IM_COL32(170, 30, 30, 240), r.w);
   }
+}
+
+// The height to keep free under a pane's picture, `width` wide, for its banner.
+float bannerSpace(const AppState& app, const PaneState& p, float width) {
+  return captionHeight(bannerLinesAt(app, p, width), width);
 }
 
 // Uploads bytes the background worker finished since the last frame.
@@ -229,7 +299,11 @@ Rect compareArea(const AppState& app, Rect area) {
             h = a.texture.valid() ? a.texture.height() : 1;
   const float legend =
       app.compare.mode == CompareMode::Difference ? 40.0f * ImGui::GetIO().FontGlobalScale : 0.0f;
-  return fitImage({area.x, area.y, area.w, area.h - legend}, w, h, 8.0f);
+  const PaneState& b = app.panes[static_cast<size_t>(app.compare.paneB)];
+  const float banners = app.compare.mode == CompareMode::Wipe
+                            ? std::max(bannerSpace(app, a, area.w / 2), bannerSpace(app, b, area.w / 2))
+                            : 0.0f;
+  return fitImage({area.x, area.y, area.w, area.h - legend - banners}, w, h, 8.0f);
 }
 
 // The newest error of the last few seconds, over the top of the image area,
@@ -267,7 +341,9 @@ void drawViewportContent(AppState& app, float x, float y, float w, float h) {
   if (app.compare.mode == CompareMode::SideBySide) {
     for (int i = 0; i < app.paneCount; ++i) {
       PaneState& p = app.panes[static_cast<size_t>(i)];
-      const Rect cell = cellOf(i, app.paneCount, area);
+      Rect cell = cellOf(i, app.paneCount, area);
+      const float bannerW = cell.w - 12.0f;  // the banner spans the cell, under the picture
+      cell.h = std::max(cell.h - bannerSpace(app, p, bannerW), 1.0f);
       const Rect r = p.texture.valid() ? fitImage(cell, p.texture.width(), p.texture.height(), 6.0f)
                                        : fitImage(cell, 1, 1, 6.0f);
       if (p.texture.valid())
@@ -292,7 +368,7 @@ void drawViewportContent(AppState& app, float x, float y, float w, float h) {
         dl->AddCircle(ImVec2(px, py), 6.0f, IM_COL32(255, 0, 255, 255), 16, 2.0f);
       }
       captionBox(app.overlayRects, dl, r.x, r.y, paneCaption(app, i), IM_COL32(0, 0, 0, 170), r.w);
-      paneBanners(dl, app, p, r);
+      paneBanners(dl, app, i, r, cell.x + 6.0f, bannerW);
     }
     return;
   }
@@ -324,8 +400,8 @@ void drawViewportContent(AppState& app, float x, float y, float w, float h) {
     for (const auto& l : lines) bw = std::max(bw, ImGui::CalcTextSize(l.c_str()).x + 8.0f);
     bw = std::min(bw, r.w / 2);
     captionBox(app.overlayRects, dl, r.x + r.w - bw, r.y, lines, IM_COL32(0, 0, 0, 170), bw);
-    paneBanners(dl, app, a, {r.x, r.y, r.w / 2, r.h});
-    paneBanners(dl, app, b, {r.x + r.w / 2, r.y, r.w / 2, r.h});
+    paneBanners(dl, app, ia, {r.x, r.y, r.w / 2, r.h}, r.x, r.w / 2);
+    paneBanners(dl, app, ib, {r.x + r.w / 2, r.y, r.w / 2, r.h}, r.x + r.w / 2, r.w / 2);
     return;
   }
 
@@ -384,6 +460,16 @@ void handleCameraInput(AppState& app, GLFWwindow* window, float x, float y, floa
         app.cameraChanged = true;
       }
     }
+    // A click on a pane's task banner unfolds or folds it.
+    if (ImGui::IsMouseReleased(0) && io.MouseDragMaxDistanceSqr[0] < 9.0f)
+      for (int i = 0; i < kMaxPanes; ++i) {
+        const auto it = app.widgetRects.find(std::string("pane.") + paneLetter(i) + ".banner");
+        if (it == app.widgetRects.end()) continue;
+        const auto& br = it->second;
+        const ImVec2 m = io.MousePos;
+        if (m.x >= br[0] && m.y >= br[1] && m.x < br[0] + br[2] && m.y < br[1] + br[3])
+          app.panes[static_cast<size_t>(i)].bannerOpen = !app.panes[static_cast<size_t>(i)].bannerOpen;
+      }
     // A click without a drag on a pane's image (side by side) selects that pixel for the ray-tree inspector.
     if (ImGui::IsMouseReleased(0) && io.MouseDragMaxDistanceSqr[0] < 9.0f && !app.draggingWipe &&
         app.compare.mode == CompareMode::SideBySide && app.scene)

@@ -62,6 +62,17 @@ std::map<std::string, std::string> TaskLog::violations() const {
   return violations_;
 }
 
+void TaskLog::noteRan(const std::string& id, bool byReference) {
+  std::lock_guard lock(mutex_);
+  auto [it, fresh] = ran_.try_emplace(id, byReference);
+  if (!fresh) it->second = it->second && byReference;  // the student's code ran at least once: theirs
+}
+
+std::map<std::string, bool> TaskLog::ran() const {
+  std::lock_guard lock(mutex_);
+  return ran_;
+}
+
 std::map<std::string, std::string> TaskLog::missing() const {
   std::lock_guard lock(mutex_);
   return missing_;
@@ -72,6 +83,7 @@ void TaskLog::clear() {
   missing_.clear();
   violations_.clear();
   striping_.clear();
+  ran_.clear();
   serial_.store(nextSerial(), std::memory_order_release);
 }
 

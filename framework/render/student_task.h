@@ -31,6 +31,10 @@ class TaskLog {
   // A task's code broke a rule (it used the framework's own answer to itself, ...).
   void reportViolation(const std::string& id, const std::string& message);
   std::map<std::string, std::string> violations() const;  // id -> message
+  // The tasks this render called, and who answered: false = the student's code
+  // (a stub included), true = the reference (tasks/task_modes.h).
+  void noteRan(const std::string& id, bool byReference);
+  std::map<std::string, bool> ran() const;
   void clear();
   // Unique for this log's contents: a new log (even at a freed log's address)
   // and clear() get a fresh serial, so per-thread report caches never go stale.
@@ -41,6 +45,7 @@ class TaskLog {
   mutable std::mutex mutex_;
   std::map<std::string, std::string> missing_;
   std::map<std::string, std::string> violations_;
+  std::map<std::string, bool> ran_;
   std::set<std::string> striping_;  // ids reported at least once by a pixel-striping stub
 };
 

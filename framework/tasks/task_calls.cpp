@@ -38,9 +38,22 @@ bool studentCodeRunning(int task) { return task >= 0 && tRunning[static_cast<siz
 
 void noteStubRan() { tStubRan = true; }
 
-void noteTaskCalled(int task) {
+void noteTaskCalled(int task, bool byReference) {
   const uint64_t bit = uint64_t{1} << static_cast<unsigned>(task);
   if (!(gCalled.load(std::memory_order_relaxed) & bit)) gCalled.fetch_or(bit, std::memory_order_relaxed);
+  TaskLog* log = currentTaskLog();
+  if (!log) return;
+  thread_local const TaskLog* seenLog = nullptr;
+  thread_local uint64_t seenSerial = 0, seenBits[2] = {0, 0};  // [byReference]: tasks already logged
+  const uint64_t serial = log->serial();
+  if (log != seenLog || serial != seenSerial) {
+    seenLog = log;
+    seenSerial = serial;
+    seenBits[0] = seenBits[1] = 0;
+  }
+  if (seenBits[byReference] & bit) return;
+  seenBits[byReference] |= bit;
+  log->noteRan(taskCatalog()[static_cast<size_t>(task)].id, byReference);
 }
 
 std::vector<std::string> takeTasksCalled() {

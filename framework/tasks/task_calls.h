@@ -36,8 +36,10 @@ class LIGHTLAB_FRAMEWORK_ONLY StudentCall {
 LIGHTLAB_FRAMEWORK_ONLY bool studentCodeRunning(int task);
 
 // Called by the dispatch on every call of a task function (any mode): what a
-// test uses, for the handouts' "builds on" lists. Cheap after the first call.
-LIGHTLAB_FRAMEWORK_ONLY void noteTaskCalled(int task);
+// test uses, for the handouts' "builds on" lists, and in the render's task log
+// whether the student's code or the reference answered (the GUI's pane label).
+// Cheap after the first call per thread and render.
+LIGHTLAB_FRAMEWORK_ONLY void noteTaskCalled(int task, bool byReference);
 // The IDs of the tasks called since the last call, which clears the record.
 LIGHTLAB_FRAMEWORK_ONLY std::vector<std::string> takeTasksCalled();
 

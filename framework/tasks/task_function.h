@@ -17,11 +17,13 @@
 #pragma once
 
 #include <atomic>
+#include <cstdint>
 #include <mutex>
 #include <stdexcept>
 #include <string>
 
 #include "render/student_task.h"
+#include "tasks/crash_guard.h"
 #include "tasks/task_calls.h"
 #include "tasks/task_catalog.h"
 #include "tasks/task_modes.h"
@@ -41,8 +43,8 @@ class TaskFunction<R(A...)> {
       : task_(requireTask(id)), id_(id), name_(name), recursive_(taskCatalog()[static_cast<size_t>(task_)].recursive) {}
 
   R operator()(A... args) const {
-    noteTaskCalled(task_);
     const Mode m = mode(task_);
+    noteTaskCalled(task_, m == Mode::Reference);
     if (m == Mode::Reference) return reference()(args...);
     const Fn fn = student();
     if (!fn) return m == Mode::Auto ? reference()(args...) : R{};
@@ -55,8 +57,13 @@ class TaskFunction<R(A...)> {
                                    " (the task's own function) again: in a graded run that is your own code, never the reference");
         stub = true;
       } else {
-        result = fn(args...);
+        const bool guarded = crashGuardEnabled();  // the GUI: a crash or a NaN storm stops the render, naming the task
+        if (guarded)
+          result = guardedCall(id_, name_, [&] { return fn(args...); });
+        else
+          result = fn(args...);
         stub = call.stubRan();
+        if (guarded && !stub && holdsNaN(result)) noteNaNResult(task_, id_, name_);
       }
     }
     if (stub && m == Mode::Auto) return reference()(args...);
@@ -64,14 +71,19 @@ class TaskFunction<R(A...)> {
   }
 
  private:
+  // The student's function of the current module generation (hot reload re-resolves it).
   Fn student() const {
-    if (const Fn fn = student_.load(std::memory_order_acquire)) return fn;
-    std::call_once(studentOnce_, [this] {
-      const LoadedFunction f = loadTaskFunction(task_, name_, false);
-      if (f.address) student_.store(reinterpret_cast<Fn>(f.address), std::memory_order_release);
-      else studentError_ = f.error;
-    });
-    const Fn fn = student_.load(std::memory_order_acquire);
+    const uint64_t generation = studentModuleGeneration();
+    if (loadedGeneration_.load(std::memory_order_acquire) != generation) {
+      std::lock_guard lock(studentMutex_);
+      if (loadedGeneration_.load(std::memory_order_relaxed) != generation) {
+        const LoadedFunction f = loadTaskFunction(task_, name_, false);
+        student_.store(reinterpret_cast<Fn>(f.address), std::memory_order_relaxed);
+        studentError_ = f.error;
+        loadedGeneration_.store(generation, std::memory_order_release);
+      }
+    }
+    const Fn fn = student_.load(std::memory_order_relaxed);
     if (!fn) reportMissingTask(id_, studentError_.c_str());  // the module does not load: said once per render
     return fn;
   }
@@ -91,8 +103,10 @@ class TaskFunction<R(A...)> {
   const char* name_;
   bool recursive_;
   mutable std::atomic<Fn> student_{nullptr}, reference_{nullptr};
-  mutable std::once_flag studentOnce_;
-  mutable std::string studentError_;  // why the module does not load (written once, in call_once)
+  // The module generation student_ belongs to (none yet: ~0); written under studentMutex_.
+  mutable std::atomic<uint64_t> loadedGeneration_{~uint64_t{0}};
+  mutable std::mutex studentMutex_;
+  mutable std::string studentError_;  // why the module does not load (written under studentMutex_)
 };
 
 }  // namespace ll::tasks

@@ -3,7 +3,9 @@
 #include <cxxabi.h>
 #include <dlfcn.h>
 #include <elf.h>
+#include <unistd.h>
 
+#include <atomic>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -57,19 +59,21 @@ struct Module {
 
 std::mutex gMutex;
 std::map<std::pair<int, bool>, Module> gModules;
+std::atomic<uint64_t> gGeneration{0};
 
 using EntryFn = void* (*)(const char*);
 using IdFn = const char* (*)();
 
-// Opens `path` (not cached): the handle, or the error.
-Module openModule(const std::string& path, int task) {
+// Opens `path` (not cached): the handle, or the error. With `loadFrom`, the
+// loader opens that file (a copy of `path`) instead; messages name `path`.
+Module openModule(const std::string& path, int task, const std::string& loadFrom = "") {
   Module m;
   if (!fs::exists(path)) {
     m.error = path + ": no such task module (build it: cmake --build build)";
     return m;
   }
   dlerror();
-  void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+  void* handle = dlopen((loadFrom.empty() ? path : loadFrom).c_str(), RTLD_NOW | RTLD_LOCAL);
   if (!handle) {
     const char* e = dlerror();
     m.error = explainLoadError(path, e ? e : "unknown error");
@@ -143,10 +147,63 @@ std::string modulePath(const std::string& dir, int task) {
   return dir + "/lightlab_" + taskCatalog()[static_cast<size_t>(task)].id + ".so";
 }
 
+namespace {
+
+// The folder of this process's reloaded module copies, removed at exit.
+struct ReloadFolder {
+  fs::path path;
+  ReloadFolder() {
+    std::error_code ec;
+    path = fs::temp_directory_path(ec) / ("lightlab-reload-" + std::to_string(::getpid()));
+  }
+  ~ReloadFolder() {
+    std::error_code ec;
+    fs::remove_all(path, ec);
+  }
+};
+
+// A student module after a reload: opened from a fresh copy, since the loader
+// returns an already loaded module for the same path -- or for the same file
+// identity (device, inode), which is why the copies stay on disk while the
+// process runs: a deleted copy's inode number could come back for the next one.
+Module openReloaded(const std::string& path, int task, uint64_t generation) {
+  static ReloadFolder folder;
+  std::error_code ec;
+  fs::create_directories(folder.path, ec);
+  const fs::path copy = folder.path / (std::to_string(generation) + "-" + fs::path(path).filename().string());
+  if (!fs::exists(path) || !fs::copy_file(path, copy, fs::copy_options::overwrite_existing, ec))
+    return openModule(path, task);  // names the missing file, or loads it in place
+  return openModule(path, task, copy.string());
+}
+
+Module openStudentOrReference(int task, bool reference) {
+  const std::string path = modulePath(reference ? referenceModuleDir() : studentModuleDir(), task);
+  const uint64_t generation = gGeneration.load(std::memory_order_acquire);
+  return reference || generation == 0 ? openModule(path, task) : openReloaded(path, task, generation);
+}
+
+}  // namespace
+
+uint64_t studentModuleGeneration() { return gGeneration.load(std::memory_order_acquire); }
+
+void reloadStudentModules() {
+  std::lock_guard lock(gMutex);
+  for (auto it = gModules.begin(); it != gModules.end();) {
+    if (it->first.second) {
+      ++it;
+      continue;
+    }
+    // Not dlclose'd: text the old code handed to the framework (a stub's message, a
+    // violation) may still be read; a retired module costs only its mapping.
+    it = gModules.erase(it);
+  }
+  gGeneration.fetch_add(1, std::memory_order_acq_rel);
+}
+
 LoadedFunction loadTaskFunction(int task, const std::string& name, bool reference) {
   std::lock_guard lock(gMutex);
   auto [it, fresh] = gModules.try_emplace({task, reference});
-  if (fresh) it->second = openModule(modulePath(reference ? referenceModuleDir() : studentModuleDir(), task), task);
+  if (fresh) it->second = openStudentOrReference(task, reference);
   LoadedFunction f;
   if (!it->second.handle) {
     f.error = it->second.error;

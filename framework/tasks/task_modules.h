@@ -9,6 +9,7 @@
 // written by the build (cmake/task_module_entry.cpp.in).
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,17 @@ struct LoadedFunction {
 // Function `name` of `task` from the student's module or the reference.
 // Thread-safe; a module is opened once per process.
 LIGHTLAB_FRAMEWORK_ONLY LoadedFunction loadTaskFunction(int task, const std::string& name, bool reference);
+
+// Hot reload (lightlab gui --watch): forgets every student module, so the next
+// call of a task function loads the module as it is on disk now. Precondition:
+// no student code is running or will return into an old module (the GUI stops
+// every pane first). Each reloaded module is loaded from a private copy (the
+// loader would return the old one for the same path or file), kept in
+// $TMPDIR/lightlab-reload-<pid> until the process exits; old modules stay
+// mapped. References are not reloaded.
+LIGHTLAB_FRAMEWORK_ONLY void reloadStudentModules();
+// How many times reloadStudentModules ran: TaskFunction re-resolves when it changes.
+LIGHTLAB_FRAMEWORK_ONLY uint64_t studentModuleGeneration();
 
 // What is wrong with a built module's exports, one line each (empty: nothing):
 // symbols other than its entry (a student file defining a framework or grader

@@ -6,6 +6,8 @@
 //   screenshot_check SHOT.png pane I REF.pfm [U0 U1]   pane I shows REF (columns U0..U1 of it, for wipe)
 //   screenshot_check SHOT.png diff A.pfm B.pfm          the compare view is the heatmap of A against B
 //   screenshot_check SHOT.png differs OTHER.png         the two pictures differ visibly
+//   screenshot_check SHOT.png magenta I                 prints the fraction of pane I's pixels (outside
+//                                                       overlays) that are stub magenta (a task's stripes)
 //
 // Metric: the displayed region and the reference are both averaged over a
 // grid of blocks in sRGB [0,1]; every block not touched by an overlay must
@@ -142,7 +144,23 @@ int main(int argc, char** argv) {
       compareRegion(shot, rectOf(side["compare"]["rect"]), srgbOf(heat), 0.0, 1.0, overlays, "difference heatmap");
       return 0;
     }
-    fail("unknown mode '" + mode + "' (allowed: pane, diff, differs)");
+    if (mode == "magenta") {
+      const Rect r = rectOf(side["panes"].at(static_cast<size_t>(std::stoi(argv[3])))["rect"]);
+      long magenta = 0, counted = 0;
+      for (int y = static_cast<int>(r[1]); y < static_cast<int>(r[1] + r[3]) && y < shot.height(); ++y)
+        for (int x = static_cast<int>(r[0]); x < static_cast<int>(r[0] + r[2]) && x < shot.width(); ++x) {
+          bool covered = false;
+          for (const Rect& o : overlays) covered = covered || (x >= o[0] && y >= o[1] && x < o[0] + o[2] && y < o[1] + o[3]);
+          if (covered || x < 0 || y < 0) continue;
+          const Rgb c = shot.at(x, y);
+          ++counted;
+          magenta += c.r > 0.6f && c.b > 0.6f && c.g < 0.35f;
+        }
+      if (counted == 0) fail("pane " + std::string(argv[3]) + " shows no pixels");
+      std::printf("%.4f\n", static_cast<double>(magenta) / static_cast<double>(counted));
+      return 0;
+    }
+    fail("unknown mode '" + mode + "' (allowed: pane, diff, differs, magenta)");
   } catch (const std::exception& e) {
     fail(e.what());
   }
