@@ -25,6 +25,16 @@ endforeach()
 target_link_libraries(lightlab_module_settings INTERFACE glm::glm nlohmann_json::nlohmann_json lightlab_warnings)
 target_compile_options(lightlab_module_settings INTERFACE -fvisibility=hidden -fvisibility-inlines-hidden)
 
+# One precompiled header for every student module (cmake/task_module_pch.h: the framework
+# headers the task headers include), so a module's compile is the student's file alone: what
+# the GUI's hot reload waits for after a save (a one-line change: about 1.3 s -> 0.4 s).
+# Compiled with exactly the student modules' flags (LIGHTLAB_SOLUTION=0, PIC, no export macro).
+add_library(lightlab_module_pch OBJECT ${LIGHTLAB_ROOT}/cmake/task_module_pch.cpp)
+target_link_libraries(lightlab_module_pch PRIVATE lightlab_module_settings)
+target_compile_definitions(lightlab_module_pch PRIVATE LIGHTLAB_SOLUTION=0)
+set_target_properties(lightlab_module_pch PROPERTIES POSITION_INDEPENDENT_CODE ON EXCLUDE_FROM_ALL ON)
+target_precompile_headers(lightlab_module_pch PRIVATE ${LIGHTLAB_ROOT}/cmake/task_module_pch.h)
+
 # The module of task ID from its file (assignments/<folder>/<file>, or SOURCE).
 function(lightlab_task_module target id output_dir solution)
   cmake_parse_arguments(ARG "" "SOURCE;CHECK_WITH" "" ${ARGN})
@@ -51,6 +61,10 @@ function(lightlab_task_module target id output_dir solution)
   target_compile_definitions(${target} PRIVATE LIGHTLAB_SOLUTION=${solution})
   set_target_properties(${target} PROPERTIES PREFIX "" OUTPUT_NAME lightlab_${id}
                         LIBRARY_OUTPUT_DIRECTORY ${output_dir})
+  if(solution STREQUAL "0")  # a student module: the shared precompiled header
+    set_target_properties(${target} PROPERTIES DEFINE_SYMBOL "")
+    target_precompile_headers(${target} REUSE_FROM lightlab_module_pch)
+  endif()
   if(ARG_CHECK_WITH)
     add_custom_command(TARGET ${target} POST_BUILD
       COMMAND ${CMAKE_COMMAND} -DPROGRAM=${ARG_CHECK_WITH} -DMODULE=$<TARGET_FILE:${target}> -DTASK=${id}

@@ -1,0 +1,1 @@
+// The object whose compile makes the task modules' precompiled header (task_module_pch.h).
