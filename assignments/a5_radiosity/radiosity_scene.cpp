@@ -124,6 +124,7 @@ std::shared_ptr<const PatchScene> computePatches(const Scene& scene, const Radio
   }
   out->formFactorSeconds = since(t);
   out->missingTasks = log.missing();
+  out->tasksRan = log.ran();
   return out;
 }
 
@@ -175,8 +176,11 @@ std::shared_ptr<const SolvedRadiosity> computeSolution(std::shared_ptr<const Pat
   out->energy = energyBalance(system, b);
   out->missingTasks = out->patches->missingTasks;
   for (const auto& [id, what] : log.missing()) out->missingTasks[id] = what;
+  out->tasksRan = out->patches->tasksRan;
+  for (const auto& [id, byReference] : log.ran()) out->tasksRan[id] = byReference;
   return out;
 }
+
 
 }  // namespace
 
@@ -269,6 +273,12 @@ std::shared_ptr<const SolvedRadiosity> solveScene(const Scene& scene, const Radi
   solveCache.emplace_front(sk, solved);
   if (solveCache.size() > 8) solveCache.pop_back();
   return solved;
+}
+
+void SolvedRadiosity::replayTasks() const {
+  for (const auto& [id, what] : missingTasks) reportMissingTask(id.c_str(), what.c_str());
+  if (TaskLog* log = currentTaskLog())
+    for (const auto& [id, byReference] : tasksRan) log->noteRan(id, byReference);
 }
 
 }  // namespace ll::a5

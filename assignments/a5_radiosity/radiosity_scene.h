@@ -48,6 +48,7 @@ struct PatchScene {
   FormFactorDiagnostics diagnostics;
   double meshSeconds = 0.0, accelSeconds = 0.0, formFactorSeconds = 0.0;
   std::map<std::string, std::string> missingTasks;  // student stubs that ran (A5.1)
+  std::map<std::string, bool> tasksRan;              // student tasks called -> by their reference (TaskLog::ran)
 };
 
 struct SolvedRadiosity {
@@ -61,6 +62,9 @@ struct SolvedRadiosity {
   std::vector<Rgb> vertexShown; // per mesh vertex: area-weighted mean of its patches' `shown`
   EnergyBalance energy;
   std::map<std::string, std::string> missingTasks;  // student stubs that ran (A5.x), form factors included
+  std::map<std::string, bool> tasksRan;              // student tasks called -> by their reference, likewise
+  // Tells the current render (its task log) what this cached solve ran: its stubs and whose code.
+  void replayTasks() const;
   RadiositySystem system() const { return {mesh().patches, f()}; }
 };
 

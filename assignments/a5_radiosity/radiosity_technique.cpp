@@ -58,7 +58,7 @@ class Radiosity final : public PixelTechnique {
     patches_ = solved_->patches;
     shown_ = solved_->shown;
     corners_ = solved_->vertexShown;
-    for (const auto& [id, what] : solved_->missingTasks) reportMissingTask(id.c_str(), what.c_str());
+    solved_->replayTasks();
   }
 
  protected:
@@ -190,7 +190,7 @@ class RadiosityRaster final : public Technique {
     settings_ = a5::radiositySettings(ctx.params);
     settings_.progressive = false;
     solved_ = a5::solveScene(ctx.scene, settings_);
-    for (const auto& [id, what] : solved_->missingTasks) reportMissingTask(id.c_str(), what.c_str());
+    solved_->replayTasks();
   }
   void renderPass(const RenderContext& ctx, int, FrameBuffer& fb, WorkCounters& counters,
                   const std::atomic<bool>& cancel) override {
