@@ -25,18 +25,6 @@ fs::file_time_type writeTime(const std::string& path) {
   return ec ? fs::file_time_type{} : t;
 }
 
-// Copies the values of `from` whose names `to` also declares (switching
-// technique keeps e.g. light_samples when both have it).
-void carryOver(const ParamSet& from, ParamSet& to) {
-  for (const ParamDecl& d : from.decls())
-    if (to.has(d.name)) {
-      try {
-        to.set(d.name, from.text(d.name));
-      } catch (const UserError&) {  // same name, other range: keep the default
-      }
-    }
-}
-
 bool isPresetFile(const std::string& path) {
   if (fs::path(path).extension() != ".json") return false;
   std::ifstream in(path);
@@ -142,18 +130,28 @@ void openDroppedFile(AppState& app, const std::string& path) {
 }
 
 namespace {
-// Switches a pane's module (technique or accelerator) by name, keeping the
-// parameter values the new module also declares.
+// Switches a pane's module (technique or accelerator) by name. Each module
+// keeps its own values: the current ones are put aside under the current name,
+// and the new module gets its own from before, or its defaults -- never
+// another module's (whitted's max_depth 5 is not path's).
 template <class Info>
 void switchModule(AppState& app, const std::string& name, const Info& (*find)(const std::string&),
-                  const char* kind, std::string& current, ParamSet& params, bool& dirty) {
+                  const char* kind, std::string& current, ParamSet& params,
+                  std::map<std::string, ParamSet>& saved, bool& dirty) {
   try {
     const Info& info = find(name);
-    ParamSet next(std::string(kind) + " '" + info.name + "'", info.params);
-    carryOver(params, next);
-    current = info.name;
-    params = std::move(next);
     dirty = true;
+    ParamSet fresh(std::string(kind) + " '" + info.name + "'", info.params);
+    if (info.name == current) {  // the same module: its values stay (over fresh declarations)
+      for (const ParamDecl& d : fresh.decls())
+        if (params.has(d.name)) fresh.set(d.name, params.text(d.name));
+      params = std::move(fresh);
+      return;
+    }
+    if (!current.empty() && !params.decls().empty()) saved.insert_or_assign(current, params);  // (none yet: a new pane)
+    const auto it = saved.find(info.name);
+    params = it != saved.end() ? it->second : std::move(fresh);
+    current = info.name;
   } catch (const UserError& e) {
     addMessage(app, e.what());
   }
@@ -163,13 +161,13 @@ void switchModule(AppState& app, const std::string& name, const Info& (*find)(co
 void setTechnique(AppState& app, int paneIndex, const std::string& name) {
   PaneState& pane = app.panes.at(static_cast<size_t>(paneIndex));
   switchModule<TechniqueInfo>(app, name, &findTechnique, "technique", pane.technique,
-                              pane.techniqueParams, pane.dirty);
+                              pane.techniqueParams, pane.savedTechniqueParams, pane.dirty);
 }
 
 void setAccelerator(AppState& app, int paneIndex, const std::string& name) {
   PaneState& pane = app.panes.at(static_cast<size_t>(paneIndex));
   switchModule<AcceleratorInfo>(app, name, &findAccelerator, "accelerator", pane.accelerator,
-                                pane.accelParams, pane.dirty);
+                                pane.accelParams, pane.savedAccelParams, pane.dirty);
 }
 
 void applyPreset(AppState& app, const ViewPreset& preset) {
@@ -201,6 +199,8 @@ void applyPreset(AppState& app, const ViewPreset& preset) {
     dst.accelerator = src.accelerator;
     dst.techniqueParams = src.techniqueParams;
     dst.accelParams = src.accelParams;
+    dst.savedTechniqueParams.clear();  // a preset is a whole new view
+    dst.savedAccelParams.clear();
     dst.spp = src.spp;
     dst.view = src.view;
     dst.dirty = true;

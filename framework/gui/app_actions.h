@@ -43,8 +43,9 @@ bool loadPresetFile(AppState& app, const std::string& path);
 ViewPreset capturePreset(const AppState& app);
 bool savePresetFile(AppState& app, const std::string& path);
 
-// Changes a pane's technique or accelerator, keeping parameter values whose
-// names still exist. Unknown names become messages.
+// Changes a pane's technique or accelerator. Each keeps its own parameter
+// values per pane: switching back restores them; a first switch gets the
+// defaults. Unknown names become messages.
 void setTechnique(AppState& app, int pane, const std::string& name);
 void setAccelerator(AppState& app, int pane, const std::string& name);
 

@@ -1,6 +1,6 @@
 // The GUI's actions without a window: a broken scene or preset leaves the
 // previous state usable with a message, a file change reloads, switching
-// technique keeps shared parameters, and panes restart on any change.
+// technique or accelerator keeps each one's own parameters, and panes restart on any change.
 #include "gui/app_actions.h"
 
 #include <algorithm>
@@ -113,14 +113,35 @@ TEST(AppActions, ChangingTheSceneFileOnDiskReloadsItKeepingTheView) {
   fs::remove_all(dir);
 }
 
-TEST(AppActions, SwitchingTechniqueOrAcceleratorKeepsSharedParameters) {
+TEST(AppActions, EachTechniqueAndAcceleratorKeepsItsOwnParameters) {
   AppState app;
   makeSmall(app);
+  setTechnique(app, 0, "whitted");
+  app.panes[0].techniqueParams.set("max_depth", "2");
   app.panes[0].techniqueParams.set("light_samples", "5");
   app.panes[0].dirty = false;
-  setTechnique(app, 0, "raycast");
-  EXPECT_EQ(app.panes[0].techniqueParams.getInt("light_samples"), 5);
+  setTechnique(app, 0, "whitted");  // the same technique: values stay, the pane restarts
+  EXPECT_EQ(app.panes[0].techniqueParams.getInt("max_depth"), 2);
   EXPECT_TRUE(app.panes[0].dirty);
+  // Another technique gets its own defaults, not whitted's values of the same names.
+  setTechnique(app, 0, "raycast");
+  EXPECT_EQ(app.panes[0].techniqueParams.getInt("light_samples"),
+            ParamSet("raycast", findTechnique("raycast").params).getInt("light_samples"));
+  app.panes[0].techniqueParams.set("light_samples", "3");
+  setTechnique(app, 0, "whitted");  // back: whitted's own values again
+  EXPECT_EQ(app.panes[0].techniqueParams.getInt("max_depth"), 2);
+  EXPECT_EQ(app.panes[0].techniqueParams.getInt("light_samples"), 5);
+  setTechnique(app, 0, "raycast");
+  EXPECT_EQ(app.panes[0].techniqueParams.getInt("light_samples"), 3);
+  // Per pane: pane B's whitted starts from the defaults.
+  setTechnique(app, 1, "whitted");
+  EXPECT_EQ(app.panes[1].techniqueParams.getInt("max_depth"),
+            ParamSet("whitted", findTechnique("whitted").params).getInt("max_depth"));
+  setAccelerator(app, 0, "bvh");
+  app.panes[0].accelParams.set("max_leaf", "2");
+  setAccelerator(app, 0, "kdtree");
+  setAccelerator(app, 0, "bvh");
+  EXPECT_EQ(app.panes[0].accelParams.getInt("max_leaf"), 2);
   setTechnique(app, 0, "no-such");
   EXPECT_TRUE(contains(app.messages.back().text, "no-such"));
   EXPECT_EQ(app.panes[0].technique, "raycast");

@@ -34,6 +34,8 @@ struct PaneState {
   std::string accelerator = "none";
   ParamSet techniqueParams,
       accelParams;  // live values; their declarations come from the registries
+  // The values of the other techniques and accelerators this pane showed: switching back restores them.
+  std::map<std::string, ParamSet> savedTechniqueParams, savedAccelParams;
   int spp = 16;
   PaneView view = PaneView::Image;
   std::unique_ptr<PaneRenderer> renderer = std::make_unique<PaneRenderer>();

@@ -18,6 +18,7 @@ namespace {
 #endif
 #endif
 
+#ifndef LIGHTLAB_UNDER_ASAN  // the signal tests only
 volatile int* volatile gNowhere = nullptr;  // volatile: neither the access nor the load can be optimised away
 volatile bool gStop = false;
 
@@ -32,6 +33,7 @@ int recurseForever(int n) {
   keep[0] = n;
   return recurseForever(n + 1) + keep[0];
 }
+#endif
 
 TEST(CrashGuard, ASegfaultInGuardedCodeThrowsNamingTheTask) {
 #ifdef LIGHTLAB_UNDER_ASAN
