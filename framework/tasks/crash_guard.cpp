@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <vector>
 
 namespace ll::tasks {
 
@@ -35,14 +36,25 @@ GuardFrame*& currentGuard() {
   return frame;
 }
 
+// This thread's alternate signal stack, switched off and freed when the thread ends.
+struct AltStack {
+  std::vector<char> bytes;
+  AltStack() : bytes(kAltStackBytes) {
+    stack_t stack{};
+    stack.ss_sp = bytes.data();
+    stack.ss_size = bytes.size();
+    sigaltstack(&stack, nullptr);
+  }
+  ~AltStack() {
+    stack_t off{};
+    off.ss_flags = SS_DISABLE;
+    sigaltstack(&off, nullptr);
+  }
+};
+
 void prepareThread() {
-  thread_local bool ready = false;
-  if (ready) return;
-  ready = true;
-  stack_t stack{};
-  stack.ss_sp = std::malloc(kAltStackBytes);  // kept for the thread's life
-  stack.ss_size = kAltStackBytes;
-  if (stack.ss_sp) sigaltstack(&stack, nullptr);
+  thread_local AltStack stack;
+  (void)stack;
 }
 
 std::string signalName(int signal) {
