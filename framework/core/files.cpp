@@ -15,4 +15,10 @@ void createParentDirectory(const std::string& path) {
   if (ec) throwUserError(path + ": cannot create the folder " + parent.string() + ": " + ec.message());
 }
 
+std::filesystem::file_time_type writeTime(const std::filesystem::path& path) {
+  std::error_code ec;
+  const auto t = std::filesystem::last_write_time(path, ec);
+  return ec ? std::filesystem::file_time_type{} : t;
+}
+
 }  // namespace ll

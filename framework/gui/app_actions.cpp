@@ -5,6 +5,7 @@
 #include <sstream>
 #include <system_error>
 
+#include "core/files.h"
 #include "core/error.h"
 #include "gui/view_camera.h"
 #include "modules/registry.h"
@@ -18,12 +19,6 @@ namespace fs = std::filesystem;
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-fs::file_time_type writeTime(const std::string& path) {
-  std::error_code ec;
-  const auto t = fs::last_write_time(path, ec);
-  return ec ? fs::file_time_type{} : t;
-}
 
 bool isPresetFile(const std::string& path) {
   if (fs::path(path).extension() != ".json") return false;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "core/error.h"
 #include "gui/app_actions.h"
 #include "tasks/task_catalog.h"
 #include "tasks/task_modes.h"
@@ -30,12 +31,18 @@ std::string assignmentPresetPath(const std::string& assignment) {
   return "";
 }
 
-bool focusAssignment(AppState& app, const std::string& assignment, bool applyItsPreset) {
+std::string assignmentProblem(const std::string& assignment) {
   const auto names = assignmentNames();
-  if (!assignment.empty() && std::find(names.begin(), names.end(), assignment) == names.end()) {
-    std::string allowed;
-    for (const std::string& n : names) allowed += (allowed.empty() ? "" : ", ") + n;
-    addMessage(app, "unknown assignment '" + assignment + "' (allowed: " + allowed + ")");
+  if (std::find(names.begin(), names.end(), assignment) == names.end())
+    return "unknown assignment '" + assignment + "' (allowed: " + joinNames(names, ", ") + ")";
+  if (assignmentPresetPath(assignment).empty())
+    return "no preset for " + assignment + " (data/presets/assignments/" + assignment + ".json)";
+  return "";
+}
+
+bool focusAssignment(AppState& app, const std::string& assignment, bool applyItsPreset) {
+  if (const std::string problem = assignment.empty() ? "" : assignmentProblem(assignment); !problem.empty()) {
+    addMessage(app, problem);
     return false;
   }
   // Undo the previous focus's references, then send the other assignments' tasks to theirs
@@ -54,12 +61,7 @@ bool focusAssignment(AppState& app, const std::string& assignment, bool applyIts
     }
   app.cameraChanged = true;  // every pane renders again
   if (assignment.empty() || !applyItsPreset) return true;
-  const std::string preset = assignmentPresetPath(assignment);
-  if (preset.empty()) {
-    addMessage(app, "no preset for " + assignment + " (data/presets/assignments/" + assignment + ".json)");
-    return false;
-  }
-  return loadPresetFile(app, preset);
+  return loadPresetFile(app, assignmentPresetPath(assignment));
 }
 
 }  // namespace ll::gui

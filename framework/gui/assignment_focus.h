@@ -16,6 +16,9 @@ namespace ll::gui {
 // "A1" ... "A6", from the task catalog.
 std::vector<std::string> assignmentNames();
 
+// Why `assignment` cannot be focused ("unknown assignment 'A9' (allowed: A1, ...)"), or "" if it can.
+std::string assignmentProblem(const std::string& assignment);
+
 // The preset of an assignment (empty if none is found), looked up like the bundled scenes.
 std::string assignmentPresetPath(const std::string& assignment);
 

@@ -162,14 +162,9 @@ int runGui(const GuiOptions& options) {
   if (!options.slides.empty()) deck = loadDeck(options.slides);
   if (!options.scene.empty() && !fs::exists(options.scene))
     throwUserError(options.scene + ": cannot open file");
-  if (!options.assignment.empty()) {
-    const auto names = assignmentNames();
-    if (std::find(names.begin(), names.end(), options.assignment) == names.end())
-      throwUserError("--assignment " + options.assignment + ": no such assignment (allowed: " + joinNames(names, ", ") + ")");
-    if (assignmentPresetPath(options.assignment).empty())
-      throwUserError("--assignment " + options.assignment + ": its preset data/presets/assignments/" + options.assignment +
-                     ".json is missing");
-  }
+  if (!options.assignment.empty())
+    if (const std::string problem = assignmentProblem(options.assignment); !problem.empty())
+      throwUserError("--assignment: " + problem);
 
   glfwSetErrorCallback(onGlfwError);
   if (!glfwInit())

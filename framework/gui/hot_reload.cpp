@@ -7,6 +7,7 @@
 
 #include "gui/app_actions.h"
 #include "gui/app_state.h"
+#include "gui/side_panel.h"
 #include "tasks/task_catalog.h"
 #include "tasks/task_modes.h"
 #include "tasks/task_modules.h"
@@ -158,10 +159,6 @@ void updateHotReload(AppState& app) {
 void drawHotReloadStatus(AppState& app) {
   HotReloadState& h = app.hotReload;
   if (h.phase == HotReloadState::Phase::Off) return;
-  const auto record = [&app](const char* name) {
-    const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
-    app.widgetRects[name] = {a.x, a.y, b.x - a.x, b.y - a.y};
-  };
   switch (h.phase) {
     case HotReloadState::Phase::Building:
       ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "Building %s ... %.0f s", taskIds(h.queued.empty() ? h.last.tasks : h.queued).c_str(),
@@ -174,9 +171,9 @@ void drawHotReloadStatus(AppState& app) {
       ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.45f, 0.45f, 1));
       ImGui::TextWrapped("Build failed -- the panes show your last good code:\n%s", h.last.firstError.oneLine().c_str());
       ImGui::PopStyleColor();
-      record("reload.error");
+      recordWidget(app, "reload.error");
       if (ImGui::SmallButton("Show the build log")) h.showLog = true;
-      record("reload.log_button");
+      recordWidget(app, "reload.log_button");
       break;
     default:
       if (h.reloads == 0)
@@ -186,7 +183,7 @@ void drawHotReloadStatus(AppState& app) {
                            h.buildSeconds, h.latencySeconds);
       else
         ImGui::TextWrapped("Reloaded %s (built in %.1f s); rendering ...", taskIds(h.last.tasks).c_str(), h.buildSeconds);
-      record("reload.status");
+      recordWidget(app, "reload.status");
       break;
   }
   if (!h.showLog) return;

@@ -26,12 +26,6 @@ namespace ll::gui {
 
 namespace {
 
-// Remembers where the last widget was drawn, under `name` (window coordinates).
-void recordWidget(AppState& app, const std::string& name) {
-  const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
-  app.widgetRects[name] = {a.x, a.y, b.x - a.x, b.y - a.y};
-}
-
 // Remembers the visible content area of the current window (the panel, or an
 // open combo's list: no title bar, padding or scrolled-out part), under `name`.
 void recordWindow(AppState& app, const std::string& name) {
@@ -412,6 +406,11 @@ void messagesSection(AppState& app) {
 }
 
 }  // namespace
+
+void recordWidget(AppState& app, const std::string& name) {
+  const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+  app.widgetRects[name] = {a.x, a.y, b.x - a.x, b.y - a.y};
+}
 
 void toggleFullscreen(AppState& app, GLFWwindow* window) {
   if (!app.fullscreen) {

@@ -3,6 +3,8 @@
 // statistics), presets, view settings and messages.
 #pragma once
 
+#include <string>
+
 #include "gui/app_state.h"
 
 struct GLFWwindow;
@@ -11,6 +13,10 @@ namespace ll::gui {
 
 // Draws the panel at the window's left edge, `width` pixels wide and full height.
 void drawSidePanel(AppState& app, GLFWwindow* window, float width, float height);
+
+// Remembers where the last ImGui item was drawn, under `name` (window
+// coordinates), for the screenshot sidecar and scripted UI tests.
+void recordWidget(AppState& app, const std::string& name);
 
 // Switches between windowed and fullscreen on the primary monitor.
 void toggleFullscreen(AppState& app, GLFWwindow* window);

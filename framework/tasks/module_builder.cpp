@@ -3,6 +3,7 @@
 #include <regex>
 #include <sstream>
 
+#include "core/files.h"
 #include "core/subprocess.h"
 #include "tasks/task_catalog.h"
 
@@ -21,12 +22,6 @@ namespace ll::tasks {
 namespace fs = std::filesystem;
 
 namespace {
-
-fs::file_time_type writeTime(const fs::path& p) {
-  std::error_code ec;
-  const auto t = fs::last_write_time(p, ec);
-  return ec ? fs::file_time_type{} : t;
-}
 
 std::string relativeTo(const std::string& file, const std::string& root) {
   if (root.empty()) return file;
