@@ -77,11 +77,13 @@ std::shared_ptr<const PatchScene> computePatches(const Scene& scene, const Radio
   TaskLog log;  // catches the A5.1 stub
   const ScopedTaskLog scope(&log);
   auto t = std::chrono::steady_clock::now();
+  reportPhase("patch mesh");
   out->mesh = buildPatchMesh(scene, r.patchSize * scene.geometry.sceneBounds().diagonal(), r.sphereSegments);
   out->meshSeconds = since(t);
   out->refinement.push_back(out->mesh.patches.size());
   const AcceleratorInfo info = acceleratorNamed(r.accelerator);
   const auto buildAccel = [&] {
+    reportPhase("patch accelerator (" + info.name + ")");
     t = std::chrono::steady_clock::now();
     out->accel = info.make(ParamSet(info.name, info.params));
     out->accel->build(out->mesh.geometry);
@@ -90,6 +92,8 @@ std::shared_ptr<const PatchScene> computePatches(const Scene& scene, const Radio
   buildAccel();
   for (int round = 0; round < r.adaptivePasses && formFactors; ++round) {
     // Solve this mesh, then split where neighbouring patches (sharing a corner) differ too much.
+    reportPhase("adaptive round " + std::to_string(round + 1) + " of " + std::to_string(r.adaptivePasses),
+                static_cast<double>(round) / r.adaptivePasses);
     const FormFactors f = computeFormFactors(out->mesh, *out->accel, r.formFactors);
     const RadiositySystem system{out->mesh.patches, f};
     SolverSettings quick = r.solver;

@@ -1,4 +1,5 @@
 // lightlab gui [SCENE] [--preset FILE] [--assignment AN] [--[no-]watch] [--slides DECK.md [--slide N]]
+//              [--[no-]projector] [--plot]
 //              [--screenshot FILE --frames N]
 #include <memory>
 
@@ -34,6 +35,12 @@ Command addGuiCommand(CLI::App& app, const GlobalOptions& global) {
   cmd->add_flag_callback("--watch", [o] { o->watch = 1; },
                          "Rebuild and reload your code when you save a task's file (the default in the student tree)");
   cmd->add_flag_callback("--no-watch", [o] { o->watch = 0; }, "Do not rebuild on save");
+  cmd->add_flag_callback("--projector", [o] { o->projector = 1; },
+                         "Projector mode: one large label per pane naming what differs (P toggles; I shows the "
+                         "stats; H hides the side panel); the default with --slides");
+  cmd->add_flag_callback("--no-projector", [o] { o->projector = 0; }, "Full captions, also with --slides");
+  cmd->add_flag_callback("--plot", [o] { o->plot = true; },
+                         "Show the cost-of-accuracy plot: every pane's error against the reference pane over time");
   return [o, &global]() {
     (void)global;
     const int status = gui::runGui(*o);

@@ -20,25 +20,39 @@ std::string formatDuration(double s) {
 }  // namespace
 
 ProgressBar::ProgressBar(std::string label, double total, bool quiet)
-    : label_(std::move(label)), total_(std::max(total, 1e-9)), active_(!quiet && isatty(STDERR_FILENO)) {}
+    : label_(std::move(label)),
+      total_(std::max(total, 1e-9)),
+      active_(!quiet && isatty(STDERR_FILENO)),
+      sink_(currentPhaseSink()) {
+  if (sink_) (*sink_)(label_, 0.0);
+}
 
 ProgressBar::~ProgressBar() {
   if (active_ && !finished_) std::fputc('\n', stderr);
 }
 
 void ProgressBar::update(double done) {
-  if (!active_) return;
+  if (!active_ && !sink_) return;
   std::lock_guard lock(mutex_);
   const double now = timer_.seconds();
+  if (sink_ && !finished_ && (now - lastReport_ >= 0.05 || done >= total_)) {
+    lastReport_ = now;
+    (*sink_)(label_, std::clamp(done / total_, 0.0, 1.0));
+  }
+  if (!active_) return;
   if (finished_ || (now - lastDraw_ < 0.1 && done < total_)) return;
   lastDraw_ = now;
   draw(done);
 }
 
 void ProgressBar::finish() {
-  if (!active_) return;
   std::lock_guard lock(mutex_);
   if (finished_) return;
+  if (sink_) (*sink_)(label_, 1.0);
+  if (!active_) {
+    finished_ = true;
+    return;
+  }
   draw(total_);
   std::fputc('\n', stderr);
   finished_ = true;

@@ -1,12 +1,15 @@
 // A terminal progress bar with rate and time-to-go estimate, for renders,
 // solves, studies and grading. Silent when stderr is not a terminal or when
 // constructed quiet, so logs and CI output stay clean. Thread-safe update().
+// Whatever the terminal shows, the phase sink installed on the constructing
+// thread (core/phase_progress.h: the GUI pane's) hears the label and fraction.
 #pragma once
 
 #include <atomic>
 #include <mutex>
 #include <string>
 
+#include "core/phase_progress.h"
 #include "core/timer.h"
 
 namespace ll {
@@ -29,6 +32,8 @@ class ProgressBar {
   std::string label_;
   double total_;
   bool active_;
+  const PhaseSink* sink_;  // the constructing thread's, or null
+  double lastReport_ = -1.0;
   bool finished_ = false;
   Timer timer_;
   double lastDraw_ = -1.0;

@@ -1,6 +1,7 @@
 #include "gui/app_actions.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <system_error>
@@ -17,8 +18,8 @@ namespace ll::gui {
 namespace fs = std::filesystem;
 
 namespace {
-
 using Clock = std::chrono::steady_clock;
+}  // namespace
 
 bool isPresetFile(const std::string& path) {
   if (fs::path(path).extension() != ".json") return false;
@@ -28,8 +29,6 @@ bool isPresetFile(const std::string& path) {
   head.resize(static_cast<size_t>(in.gcount()));
   return head.find("\"lightlab_preset\"") != std::string::npos;
 }
-
-}  // namespace
 
 void initPanes(AppState& app) {
   const auto& techs = techniques();
@@ -92,6 +91,7 @@ void pollSceneLoad(AppState& app) {
     app.cameraChanged = true;
     for (PaneState& p : app.panes) p.dirty = true;
     addMessage(app, (sameFile ? "reloaded " : "opened ") + path, false);
+    if (!sameFile) std::snprintf(app.pathInput, sizeof app.pathInput, "%s", path.c_str());  // the field follows
   } catch (const std::exception& e) {  // the previous scene stays usable
     addMessage(app, e.what());
   }
@@ -208,6 +208,7 @@ void applyPreset(AppState& app, const ViewPreset& preset) {
   app.uiScale = preset.uiScale;
   app.showStructure = preset.showStructure;
   app.structureDepth = preset.structureDepth;
+  app.showPlot = preset.showPlot;
   app.inspector = RayInspector{};
   if (preset.inspectPane >= 0) inspectPixel(app, preset.inspectPane, preset.inspectPixel);
   const bool sameScene = !app.scenePath.empty() && fs::exists(preset.scene) &&
@@ -242,6 +243,7 @@ ViewPreset capturePreset(const AppState& app) {
   p.uiScale = app.uiScale;
   p.showStructure = app.showStructure;
   p.structureDepth = app.structureDepth;
+  p.showPlot = app.showPlot;
   p.inspectPane = app.inspector.pane;
   p.inspectPixel = app.inspector.pixel;
   for (const PaneState& pane : app.panes) {
@@ -370,9 +372,9 @@ void refreshPanes(AppState& app) {
       pane.errorHistoryRequest = e->request;
       // One point per pass of this pane; a newer reference only refreshes the last point.
       if (!pane.errorHistory.empty() && e->seconds <= pane.errorHistory.back().first)
-        pane.errorHistory.back().second = e->error.rmse;
+        pane.errorHistory.back().second = e->error.relmse;
       else
-        pane.errorHistory.emplace_back(e->seconds, e->error.rmse);
+        pane.errorHistory.emplace_back(e->seconds, e->error.relmse);
     }
     const PaneSnapshot* refShot = ref >= 0 && ref < kMaxPanes && i != ref
                                       ? &app.panes[static_cast<size_t>(ref)].shown

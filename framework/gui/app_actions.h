@@ -67,6 +67,9 @@ void refreshPanes(AppState& app);
 bool paneActive(const AppState& app, int pane);
 bool allPanesFinished(const AppState& app);
 
+// Whether `path` is a view preset (a .json file tagged "lightlab_preset" near its top).
+bool isPresetFile(const std::string& path);
+
 // Scene files under `folders` (.json scenes, not presets, and .obj), sorted.
 std::vector<std::string> findSceneFiles(const std::vector<std::string>& folders);
 

@@ -57,7 +57,7 @@ struct PaneState {
     uint64_t request = 0;  // the pane's request the image belongs to
   };
   std::shared_ptr<Mailbox<ErrorSample>> errorMail = std::make_shared<Mailbox<ErrorSample>>();
-  // Error against the reference over the current request's passes: (seconds, RMSE), for the live plot.
+  // Error against the reference over the current request's passes: (wall seconds, relMSE), for the live plot.
   std::vector<std::pair<double, double>> errorHistory;
   uint64_t errorHistoryRequest = 0;
   uint64_t errorVersions[2] = {0, 0};
@@ -119,7 +119,9 @@ struct AppState {
   // future waits for its task, which would stall the UI.
   std::vector<std::future<std::shared_ptr<const Scene>>> abandonedLoads;
   bool loadKeepsCamera = false;         // a reload keeps the view; opening a new scene resets it
-  std::vector<std::string> sceneFiles;  // the file list of the "open" menu
+  std::vector<std::string> sceneFiles;   // the file list of the "open" menu
+  std::vector<std::string> presetFiles;  // and of the preset picker
+  std::string sceneSearch, presetSearch;  // the pickers' search fields
   char pathInput[512] = {};
 
   // --- the student tree --------------------------------------------------------
@@ -151,6 +153,17 @@ struct AppState {
   bool draggingView = false;  // a mouse drag that started over the image area
   int settledFrames = 0;      // --screenshot: frames drawn since every pane finished
   uint64_t settledPosts = 0;  // --screenshot: background jobs posted when that count last grew
+
+  // --- the lecture hall ----------------------------------------------------------
+  bool projector = false;    // P: one large one-line label per pane naming what differs; stats on I
+  bool showStats = false;    // I: in projector mode, each pane's full caption (passes, time, error)
+  bool panelHidden = false;  // H: no side panel (or slide text); the panes take the window
+  bool showPlot = false;     // the cost-of-accuracy plot beside the panes
+  std::string plotPngRequest;                  // non-empty: save the plot's pixels there after the next frame
+  std::array<float, 4> plotRect{};             // where the plot was drawn last frame (w = 0: hidden)
+  std::vector<std::string> paneLabels;         // the projector labels drawn last frame, per visible pane
+  std::vector<std::array<float, 4>> labelRects;  // and their boxes
+  ImFont* largeFont = nullptr;                 // projector labels (owned by ImGui's font atlas)
 
   // --- files and messages ------------------------------------------------------
   char presetInput[512] = "preset.json";

@@ -22,6 +22,7 @@
 #include "gpu/offscreen_gl.h"
 #include "gui/app_actions.h"
 #include "gui/assignment_focus.h"
+#include "gui/file_picker.h"
 #include "gui/hot_reload.h"
 #include "gui/presenter.h"
 #include "gui/screenshot.h"
@@ -42,6 +43,7 @@ constexpr const char* kFontPath =
 constexpr float kBaseFontPixels = 15.0f;
 constexpr float kPanelWidth = 400.0f;  // at UI scale 1
 constexpr float kSlidePanelFraction = 0.42f;  // of the window's width, in presenter mode
+constexpr float kLabelFontScale = 1.25f;      // projector labels, times the UI font
 
 // GLFW's last error, folded into our one-line messages instead of printed.
 std::string gLastGlfwError;
@@ -73,7 +75,12 @@ void onKey(GLFWwindow* window, int key, int scancode, int action, int mods) {
   if (!app || action != GLFW_PRESS) return;
   if (key == GLFW_KEY_F11) app->toggleFullscreenRequest = true;
   if (key == GLFW_KEY_F12) app->screenshotRequest = timestampedName();
-  if (!ImGui::GetIO().WantTextInput) handleSlideKey(*app, key);  // presenter mode only
+  if (ImGui::GetIO().WantTextInput) return;
+  if (handleSlideKey(*app, key)) return;  // presenter mode only
+  // The lecture hall: projector labels, stats on demand, the side panel out of the way.
+  if (key == GLFW_KEY_P) app->projector = !app->projector;
+  if (key == GLFW_KEY_I) app->showStats = !app->showStats;
+  if (key == GLFW_KEY_H) app->panelHidden = !app->panelHidden;
 }
 
 // Rebuilds the font atlas when the effective scale changed (between frames).
@@ -88,10 +95,12 @@ void applyUiScale(AppState& app) {
     io.Fonts->AddFontFromFileTTF(kFontPath, std::round(kBaseFontPixels * scale), nullptr,
                                  slides ? slideGlyphRanges() : nullptr);
     if (slides) addSlideFonts(app, std::round(kBaseFontPixels * scale));
+    app.largeFont = io.Fonts->AddFontFromFileTTF(kFontPath, std::round(kBaseFontPixels * scale * kLabelFontScale));
   } else {
     ImFontConfig config;
     config.SizePixels = std::round(13.0f * scale);
     io.Fonts->AddFontDefault(&config);
+    app.largeFont = nullptr;  // labels scale the default font up
   }
   io.Fonts->Build();
   ImGui_ImplOpenGL3_DestroyFontsTexture();
@@ -131,6 +140,22 @@ void takeScreenshot(AppState& app, GLFWwindow* window, const std::string& path) 
   }
 }
 
+// The plot's pixels as drawn this frame (the side panel's "save PNG").
+void savePlotPng(AppState& app, GLFWwindow* window, const std::string& path) {
+  int fbW = 0, fbH = 0, winW = 0, winH = 0;
+  glfwGetFramebufferSize(window, &fbW, &fbH);
+  glfwGetWindowSize(window, &winW, &winH);
+  const float k = winW > 0 ? static_cast<float>(fbW) / winW : 1.0f;
+  const auto& r = app.plotRect;
+  try {
+    saveFramebufferRegionPng(path, fbH, static_cast<int>(r[0] * k), static_cast<int>(r[1] * k),
+                             static_cast<int>(r[2] * k), static_cast<int>(r[3] * k));
+    addMessage(app, "plot " + path, false);
+  } catch (const UserError& e) {
+    addMessage(app, e.what());
+  }
+}
+
 }  // namespace
 
 std::vector<std::string> defaultSceneFolders() {
@@ -140,6 +165,14 @@ std::vector<std::string> defaultSceneFolders() {
 #endif
 #ifdef LIGHTLAB_BUILD_DATA_DIR
   folders.push_back(LIGHTLAB_BUILD_DATA_DIR "/scenes");
+#endif
+  return folders;
+}
+
+std::vector<std::string> defaultPresetFolders() {
+  std::vector<std::string> folders{"data/presets"};
+#ifdef LIGHTLAB_SOURCE_DATA_DIR
+  folders.push_back(LIGHTLAB_SOURCE_DATA_DIR "/presets");
 #endif
   return folders;
 }
@@ -201,6 +234,7 @@ int runGui(const GuiOptions& options) {
     AppState app;
     app.sceneFiles =
         findSceneFiles(options.sceneFolders.empty() ? defaultSceneFolders() : options.sceneFolders);
+    app.presetFiles = findPresetFiles(defaultPresetFolders());
     initPanes(app);
     if (!gpu) addMessage(app, "GPU techniques unavailable: " + gpuWhy);
     glfwSetWindowUserPointer(window, &app);
@@ -214,6 +248,9 @@ int runGui(const GuiOptions& options) {
       app.uiScale = kPresenterUiScale;
       openDeck(app, std::move(*deck), options.slide - 1);
     }
+    // Projector labels: on in presenter mode unless --no-projector; --projector anywhere.
+    app.projector = options.projector == 1 || (options.projector == -1 && app.presenter.active());
+    if (options.plot) app.showPlot = true;
     startHotReload(app, options.watch != 0);
     if (tasks::modulesEnabled()) tasks::enableCrashGuard();  // a crash in student code stops its pane only
     if (options.watch == 1 && app.hotReload.phase == HotReloadState::Phase::Off)
@@ -247,9 +284,12 @@ int runGui(const GuiOptions& options) {
       // 3. The UI: side panel, image area, input, keys.
       const ImGuiIO& io = ImGui::GetIO();
       const bool slide = app.presenter.active() && !app.presenter.showControls;
-      const float panelW = slide ? io.DisplaySize.x * kSlidePanelFraction
-                                 : std::min(kPanelWidth * app.appliedFontScale, io.DisplaySize.x * 0.5f);
-      if (slide)
+      const float panelW = app.panelHidden ? 0.0f
+                           : slide         ? io.DisplaySize.x * kSlidePanelFraction
+                                           : std::min(kPanelWidth * app.appliedFontScale, io.DisplaySize.x * 0.5f);
+      if (app.panelHidden)
+        app.widgetRects.clear();  // no panel drawn: no controls to find
+      else if (slide)
         drawSlidePanel(app, 0.0f, 0.0f, panelW, io.DisplaySize.y);
       else
         drawSidePanel(app, window, panelW, io.DisplaySize.y);
@@ -275,6 +315,10 @@ int runGui(const GuiOptions& options) {
       if (!app.screenshotRequest.empty()) {
         takeScreenshot(app, window, app.screenshotRequest);
         app.screenshotRequest.clear();
+      }
+      if (!app.plotPngRequest.empty()) {
+        savePlotPng(app, window, app.plotPngRequest);
+        app.plotPngRequest.clear();
       }
       if (screenshotMode && frame >= options.frames) {
         const double elapsed =

@@ -22,6 +22,8 @@ struct GuiOptions {
   std::vector<std::string> sceneFolders;  // where the "open" list looks for scenes
   std::string assignment;  // "A2": open on its preset, banners name its tasks only (empty = all)
   int watch = -1;          // rebuild and reload the student's code on save: 1 on, 0 off, -1 = on in the student tree
+  int projector = -1;      // projector mode: 1 on, 0 off, -1 = on in presenter mode
+  bool plot = false;       // the cost-of-accuracy plot beside the panes
 };
 
 // Runs until the window closes. Returns the process exit status. Throws
@@ -31,6 +33,8 @@ int runGui(const GuiOptions& options);
 // The folders with bundled scenes: data/scenes under the working directory
 // and under the source tree, and the build's generated scenes.
 std::vector<std::string> defaultSceneFolders();
+// The folders with bundled presets (data/presets, searched recursively).
+std::vector<std::string> defaultPresetFolders();
 // The default scene (the Cornell box), found the same way.
 std::string defaultScenePath();
 

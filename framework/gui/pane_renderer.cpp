@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
+#include "core/phase_progress.h"
 #include "core/timer.h"
 #include "modules/registry.h"
 #include "render/cost_image.h"
@@ -32,7 +33,7 @@ int previewDivisor(double passSeconds) {
 }  // namespace
 
 double PaneSnapshot::elapsed() const {
-  if (phase != Phase::Rendering) return seconds;
+  if (phase != Phase::Rendering && phase != Phase::Building) return seconds;
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 }
 
@@ -92,8 +93,30 @@ void PaneRenderer::publish(const PaneSnapshot& s) {
   std::lock_guard lock(mutex_);
   if (s.request != submitted_) return;  // superseded: never show a stale view after a newer submit
   const uint64_t version = snapshot_.version + (s.image != snapshot_.image ? 1 : 0);
+  // The phase is set by setPhase (from any thread); a publish of the same request keeps it.
+  const bool sameRequest = snapshot_.request == s.request;
+  std::string phaseName = std::move(snapshot_.phaseName);
+  const double fraction = snapshot_.phaseFraction;
+  const auto phaseStarted = snapshot_.phaseStarted;
+  const uint64_t clearedAt = snapshot_.clearedAt;
   snapshot_ = s;
   snapshot_.version = version;
+  snapshot_.clearedAt = s.image ? clearedAt : version;
+  if (sameRequest) {
+    snapshot_.phaseName = std::move(phaseName);
+    snapshot_.phaseFraction = fraction;
+    snapshot_.phaseStarted = phaseStarted;
+  }
+}
+
+void PaneRenderer::setPhase(uint64_t id, const std::string& phase, double fraction) {
+  std::lock_guard lock(mutex_);
+  if (snapshot_.request != id) return;
+  if (snapshot_.phaseName != phase || fraction == 0.0) {  // a new phase, or the next pass
+    snapshot_.phaseName = phase;
+    snapshot_.phaseStarted = std::chrono::steady_clock::now();
+  }
+  snapshot_.phaseFraction = fraction;
 }
 
 void PaneRenderer::workerLoop() {
@@ -139,6 +162,20 @@ void PaneRenderer::render(const RenderRequest& request, uint64_t id) {
   s.tasksRan.clear();
   s.passes = 0;
   s.seconds = 0.0;
+  s.requestBuildSeconds = s.previewSeconds = s.prepareSeconds = s.passSeconds = 0.0;
+  s.phaseName.clear();
+  s.phaseFraction = -1.0;
+  s.started = std::chrono::steady_clock::now();
+  const Timer requestTimer;  // every phase counts in the pane's time
+  // A switch of technique or view: never the old picture under the new name.
+  const std::string shows =
+      request.view == PaneView::Image ? request.technique : request.accelerator + " cost";
+  if (s.image && s.imageShows != shows) s.image.reset();
+  if (s.phase != PaneSnapshot::Phase::Building) s.phase = PaneSnapshot::Phase::Rendering;
+  publish(s);
+  // What the technique and the tiles report (ProgressBar, reportPhase) goes to this pane.
+  const PhaseSink sink = [this, id](const std::string& phase, double fraction) { setPhase(id, phase, fraction); };
+  const ScopedPhaseSink scopedSink(&sink);
 
   // The accelerator: rebuilt only when the scene or its own settings change.
   const AcceleratorInfo& accelInfo = findAccelerator(request.accelerator);
@@ -149,16 +186,18 @@ void PaneRenderer::render(const RenderRequest& request, uint64_t id) {
   if (key != accelKey_ || !accel_) {
     s.phase = PaneSnapshot::Phase::Building;
     publish(s);
+    setPhase(id, "accelerator build (" + accelInfo.name + ")", -1.0);
     accel_.reset();
     accelKey_.clear();
     accel_ =
         buildAccelerator(accelInfo, request.accelParams, request.scene->geometry, &buildSeconds_);
     accelKey_ = key;
+    s.requestBuildSeconds = buildSeconds_;
     std::lock_guard lock(mutex_);
     publishedAccel_ = accel_;
   }
   s.buildSeconds = buildSeconds_;
-  if (request.view != PaneView::Image) return renderCost(request, id, s);
+  if (request.view != PaneView::Image) return renderCost(request, id, s, requestTimer);
   const TechniqueInfo& techInfo = findTechnique(request.technique);
   // The cost of a pass is remembered per (scene, accelerator, technique, parameters, size).
   const std::string costKey =
@@ -183,24 +222,32 @@ void PaneRenderer::render(const RenderRequest& request, uint64_t id) {
       s.passes = 0;
       s.totalPasses = settings.spp;  // the usual pass count, until the job says otherwise
     }
-    s.started = std::chrono::steady_clock::now();
     publish(s);
+    setPhase(id, preview ? "preview" : "pass", preview ? -1.0 : 0.0);
     const Timer timer;
     job.run([&](int done, int total) {
       s.image = std::make_shared<const Image>(job.frame().resolve());
+      s.imageShows = techInfo.name;
       s.imageRequest = id;
       s.preview = preview;
       s.view = PaneView::Image;
       s.passes = preview ? 0 : done;
       s.totalPasses = preview ? 0 : total;
-      s.seconds = timer.seconds();
+      s.seconds = requestTimer.seconds();
       s.stats = job.stats();
+      if (preview) {
+        s.previewSeconds = timer.seconds();
+      } else {
+        s.prepareSeconds = job.stats().prepareSeconds;
+        s.passSeconds = job.stats().renderSeconds;
+      }
       s.missingTasks = job.taskLog().missing();
       s.exactFallbacks = job.taskLog().exact();
       s.taskViolations = job.taskLog().violations();
       s.tasksRan = job.taskLog().ran();
-      if (!preview && done == 1) lastPassSeconds_ = s.seconds;
+      if (!preview && done == 1) lastPassSeconds_ = job.stats().renderSeconds;
       publish(s);
+      setPhase(id, preview ? "preview" : "pass", preview ? -1.0 : 0.0);
     });
     {
       std::lock_guard lock(mutex_);
@@ -223,7 +270,7 @@ void PaneRenderer::render(const RenderRequest& request, uint64_t id) {
   publish(s);
 }
 
-void PaneRenderer::renderCost(const RenderRequest& request, uint64_t id, PaneSnapshot s) {
+void PaneRenderer::renderCost(const RenderRequest& request, uint64_t id, PaneSnapshot s, const Timer& requestTimer) {
   std::atomic<bool> cancel{false};
   {
     std::lock_guard lock(mutex_);
@@ -231,8 +278,8 @@ void PaneRenderer::renderCost(const RenderRequest& request, uint64_t id, PaneSna
     runningCost_ = &cancel;
   }
   s.phase = PaneSnapshot::Phase::Rendering;
-  s.started = std::chrono::steady_clock::now();
   publish(s);
+  setPhase(id, "cost image", -1.0);
   const Timer timer;
   const Camera camera = renderCamera(*request.scene, request.settings);
   const CostMetric metric = request.view == PaneView::NodesVisited ? CostMetric::NodesVisited
@@ -244,11 +291,13 @@ void PaneRenderer::renderCost(const RenderRequest& request, uint64_t id, PaneSna
   }
   if (counts.empty()) return;
   s.image = std::make_shared<const Image>(std::move(counts));
+  s.imageShows = request.accelerator + " cost";
   s.imageRequest = id;
   s.preview = false;
   s.view = request.view;
   s.passes = s.totalPasses = 1;
-  s.seconds = timer.seconds();
+  s.passSeconds = timer.seconds();
+  s.seconds = requestTimer.seconds();
   s.stats = RenderStats{};
   s.stats.work.rays[static_cast<size_t>(RayKind::Camera)] =
       static_cast<uint64_t>(camera.width) * camera.height;

@@ -20,6 +20,7 @@
 
 #include "core/image.h"
 #include "core/params.h"
+#include "core/timer.h"
 #include "render/render_job.h"
 #include "render/render_stats.h"
 #include "scene/scene.h"
@@ -49,10 +50,24 @@ struct PaneSnapshot {
   std::shared_ptr<const Image> image;  // linear radiance, stub pixels striped magenta
   bool preview = false;                // image is the quick low-resolution first look
   PaneView view = PaneView::Image;     // what `image` holds: radiance, or per-pixel counts
+  std::string imageShows;               // what `image` was made by: the technique, or "<accelerator> cost"
+  // `version` when the image was last cleared (a switch of technique or view):
+  // display bytes of an older version belong to what the pane showed before.
+  uint64_t clearedAt = 0;
   int passes = 0, totalPasses = 0;
-  double seconds = 0.0;  // render time up to the last completed pass (excludes build)
-  std::chrono::steady_clock::time_point started;  // when the current job began, for a live clock
-  double elapsed() const;     // seconds since `started` while rendering, else `seconds`
+  // Wall time of the request up to its last completed pass: every phase
+  // (accelerator build, preview, the technique's preparation, passes).
+  double seconds = 0.0;
+  std::chrono::steady_clock::time_point started;  // when the request began, for a live clock
+  double elapsed() const;     // seconds since `started` while building or rendering, else `seconds`
+  // The phase in progress ("accelerator build (bvh)", "form factors (hemicube, 812 patches)",
+  // "pass"), its progress in [0, 1] (< 0: unknown) and when it began.
+  std::string phaseName;
+  double phaseFraction = -1.0;
+  std::chrono::steady_clock::time_point phaseStarted;
+  // `seconds` broken down: this request's accelerator build (0 when cached), the
+  // low-resolution preview, the technique's preparation (radiosity's solve) and the passes.
+  double requestBuildSeconds = 0.0, previewSeconds = 0.0, prepareSeconds = 0.0, passSeconds = 0.0;
   double buildSeconds = 0.0;  // accelerator build of the current scene
   RenderStats stats;          // as of the last completed pass
   std::map<std::string, std::string> missingTasks;  // student task id -> what
@@ -83,8 +98,10 @@ class PaneRenderer {
  private:
   void workerLoop();
   void render(const RenderRequest& request, uint64_t id);
-  void renderCost(const RenderRequest& request, uint64_t id, PaneSnapshot s);
+  void renderCost(const RenderRequest& request, uint64_t id, PaneSnapshot s, const Timer& requestTimer);
   void publish(const PaneSnapshot& s);
+  // Sets the phase of request `id` (ignored once superseded); thread-safe.
+  void setPhase(uint64_t id, const std::string& phase, double fraction);
 
   mutable std::mutex mutex_;
   std::condition_variable wake_;

@@ -2,7 +2,9 @@
 // restarts on a new request, and its result is exactly the headless render.
 #include "gui/pane_renderer.h"
 
+#include <algorithm>
 #include <chrono>
+#include <set>
 #include <thread>
 
 #include <gtest/gtest.h>
@@ -114,6 +116,65 @@ TEST(PaneRenderer, AnErrorIsShownNotThrown) {
   pane.submit(request(scene, 1, 1));  // and it keeps working
   waitFinished(pane);
   EXPECT_EQ(pane.snapshot().phase, PaneSnapshot::Phase::Done);
+}
+
+TEST(PaneRenderer, ASwitchOfTechniqueNeverShowsThePreviousTechniquesImage) {
+  const auto scene = std::make_shared<const Scene>(loadScene(kScenes + "cornell_box.json"));
+  PaneRenderer pane;
+  pane.submit(request(scene, 1, 1));
+  waitFinished(pane);
+  ASSERT_TRUE(pane.snapshot().image);
+  EXPECT_EQ(pane.snapshot().imageShows, "raycast");
+  const uint64_t before = pane.snapshot().version;
+  // Radiosity first meshes and computes form factors (seconds): meanwhile no image, and the phase says what runs.
+  RenderRequest r = request(scene, 1, 1);
+  r.technique = "radiosity";
+  r.techniqueParams = ParamSet("technique 'radiosity'", findTechnique("radiosity").params);
+  r.techniqueParams.set("patch_size", "0.08");
+  const uint64_t id = pane.submit(r);
+  std::set<std::string> phases;
+  bool sawOldImage = false;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (!pane.finished() && std::chrono::steady_clock::now() < deadline) {
+    const PaneSnapshot s = pane.snapshot();
+    if (s.request == id) {
+      if (s.image && s.imageShows != "radiosity") sawOldImage = true;
+      if (!s.phaseName.empty()) phases.insert(s.phaseName);
+      if (!s.image) {
+        EXPECT_EQ(s.clearedAt, s.version);  // display bytes older than this are not shown
+      }
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  const PaneSnapshot s = pane.snapshot();
+  EXPECT_FALSE(sawOldImage);
+  EXPECT_GT(s.clearedAt, before);
+  EXPECT_EQ(s.phase, PaneSnapshot::Phase::Done);
+  EXPECT_EQ(s.imageShows, "radiosity");
+  const bool sawFormFactors = std::any_of(phases.begin(), phases.end(),
+                                          [](const std::string& p) { return p.rfind("form factors", 0) == 0; });
+  EXPECT_TRUE(sawFormFactors) << "phases seen: " << phases.size();
+  // The pane's time counts every phase: the preparation (mesh, form factors, solve) too.
+  EXPECT_GT(s.prepareSeconds + s.previewSeconds, 0.0);
+  EXPECT_GE(s.seconds + 1e-9, s.passSeconds + s.prepareSeconds);
+}
+
+TEST(PaneRenderer, APassReportsItsProgressTileByTile) {
+  const auto scene = std::make_shared<const Scene>(loadScene(kScenes + "cornell_box.json"));
+  PaneRenderer pane;
+  RenderRequest r = request(scene, 64, 1);
+  r.settings.width = 256;
+  r.settings.height = 256;
+  pane.submit(r);
+  std::set<int> percents;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (!pane.finished() && std::chrono::steady_clock::now() < deadline) {
+    const PaneSnapshot s = pane.snapshot();
+    if (s.phaseName == "pass" && s.phaseFraction > 0.0 && s.phaseFraction < 1.0)
+      percents.insert(static_cast<int>(s.phaseFraction * 100));
+    std::this_thread::sleep_for(std::chrono::microseconds(200));
+  }
+  EXPECT_GE(percents.size(), 2u) << "the pass's fraction should rise while it renders";
 }
 
 }  // namespace

@@ -15,19 +15,24 @@
 namespace ll::gui {
 
 void saveFramebufferPng(const std::string& path, int width, int height) {
+  saveFramebufferRegionPng(path, height, 0, 0, width, height);
+}
+
+void saveFramebufferRegionPng(const std::string& path, int framebufferHeight, int x, int y, int width, int height) {
+  if (width <= 0 || height <= 0) throwUserError(path + ": nothing to save (the region is empty)");
   std::vector<uint8_t> pixels(static_cast<size_t>(width) * height * 4);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadBuffer(GL_BACK);
-  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
-  // GL rows go bottom-up; PNG rows top-down. The window is opaque.
+  // GL rows go bottom-up from the framebuffer's bottom; PNG rows top-down. The window is opaque.
+  glReadPixels(x, framebufferHeight - y - height, width, height, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
   std::vector<uint8_t> flipped(pixels.size());
   const size_t row = static_cast<size_t>(width) * 4;
-  for (int y = 0; y < height; ++y)
+  for (int r = 0; r < height; ++r)
     for (size_t i = 0; i < row; ++i)
-      flipped[static_cast<size_t>(y) * row + i] =
-          (i % 4 == 3) ? 255 : pixels[static_cast<size_t>(height - 1 - y) * row + i];
+      flipped[static_cast<size_t>(r) * row + i] =
+          (i % 4 == 3) ? 255 : pixels[static_cast<size_t>(height - 1 - r) * row + i];
   if (!stbi_write_png(path.c_str(), width, height, 4, flipped.data(), static_cast<int>(row)))
-    throwUserError(path + ": cannot write screenshot");
+    throwUserError(path + ": cannot write the PNG");
 }
 
 std::string saveScreenshotSidecar(const AppState& app, const std::string& path, int width,
@@ -65,7 +70,16 @@ std::string saveScreenshotSidecar(const AppState& app, const std::string& path, 
             {"view", viewName(p.view)},
             {"legend_max", p.texture.legendMax()},
             {"structure_nodes", app.showStructure ? p.overlayNodes.size() : 0},
-            {"accel_params", p.accelParams.toJson()}};
+            {"accel_params", p.accelParams.toJson()},
+            {"phase_name", p.shown.phaseName},
+            {"phase_fraction", p.shown.phaseFraction},
+            {"seconds", p.shown.seconds},
+            {"elapsed", p.shown.elapsed()},
+            // Whether the pane's picture is on screen (false: the neutral placeholder while it has none
+            // of its current technique).
+            {"image_on_screen", p.texture.valid() && p.shown.image && p.texture.version() > p.shown.clearedAt},
+            {"image_shows", p.shown.imageShows},
+            {"error_history", p.errorHistory}};
     if (p.shown.image) pj["image_size"] = {p.shown.image->width(), p.shown.image->height()};
     j["panes"].push_back(pj);
   }
@@ -107,6 +121,11 @@ std::string saveScreenshotSidecar(const AppState& app, const std::string& path, 
                  {"error", h.phase == HotReloadState::Phase::Failed ? h.last.firstError.oneLine() : ""},
                  {"build_seconds", h.buildSeconds},
                  {"latency_seconds", h.latencySeconds}};
+  j["projector"] = {{"on", app.projector}, {"stats", app.showStats}, {"panel_hidden", app.panelHidden},
+                    {"labels", app.paneLabels}};
+  j["projector"]["label_rects"] = json::array();
+  for (const auto& r : app.labelRects) j["projector"]["label_rects"].push_back(rect(r));
+  j["plot"] = {{"shown", app.showPlot}, {"rect", rect(app.plotRect)}};
   j["widgets"] = json::object();
   for (const auto& [name, r] : app.widgetRects) j["widgets"][name] = rect(r);
   j["overlays"] = json::array();

@@ -12,6 +12,9 @@ namespace ll::gui {
 // Reads the back buffer (width x height framebuffer pixels) and writes `path`
 // (.png). Throws UserError if the file cannot be written.
 void saveFramebufferPng(const std::string& path, int width, int height);
+// The region (x, y, width, height) of the back buffer, framebuffer pixels from
+// the top-left, of a framebuffer `framebufferHeight` pixels high.
+void saveFramebufferRegionPng(const std::string& path, int framebufferHeight, int x, int y, int width, int height);
 
 // Writes `path` with the .json extension: framebuffer size, and per pane its
 // technique, accelerator, phase, passes, renders started (`starts`, grows on

@@ -12,8 +12,10 @@
 #include <imgui.h>
 
 #include "core/error.h"
+#include "gui/accuracy_plot.h"
 #include "gui/app_actions.h"
 #include "gui/assignment_focus.h"
+#include "gui/file_picker.h"
 #include "gui/hot_reload.h"
 #include "gui/param_widgets.h"
 #include "gui/ray_inspector.h"
@@ -26,14 +28,6 @@ namespace ll::gui {
 
 namespace {
 
-// Remembers the visible content area of the current window (the panel, or an
-// open combo's list: no title bar, padding or scrolled-out part), under `name`.
-void recordWindow(AppState& app, const std::string& name) {
-  const ImVec2 pos = ImGui::GetWindowPos(), scroll(ImGui::GetScrollX(), ImGui::GetScrollY());
-  const ImVec2 a = ImGui::GetWindowContentRegionMin(), b = ImGui::GetWindowContentRegionMax();
-  app.widgetRects[name] = {pos.x + a.x + scroll.x, pos.y + a.y + scroll.y, b.x - a.x, b.y - a.y};
-}
-
 void helpMarker(const char* text) {
   ImGui::SameLine();
   ImGui::TextDisabled("(?)");
@@ -42,7 +36,12 @@ void helpMarker(const char* text) {
 
 void sceneSection(AppState& app) {
   if (!ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) return;
-  ImGui::TextWrapped("%s", app.scenePath.empty() ? "(none)" : app.scenePath.c_str());
+  if (app.scenePath.empty()) {
+    ImGui::TextUnformatted("(no scene)");
+  } else {  // its short name; the whole path on hover
+    ImGui::TextWrapped("%s", pickerEntries({app.scenePath}).front().name.c_str());
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", app.scenePath.c_str());
+  }
   if (!app.loadingPath.empty())
     ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "loading %s ...", app.loadingPath.c_str());
   if (app.scene) {
@@ -50,18 +49,12 @@ void sceneSection(AppState& app) {
                 app.scene->geometry.spheres.size());
     ImGui::TextWrapped("effects: %s", joinNames(app.scene->effects.names()).c_str());
   }
-  if (ImGui::BeginCombo("open", "choose a scene file")) {
-    recordWindow(app, "scene.files.list");
-    for (const std::string& f : app.sceneFiles) {
-      if (ImGui::Selectable(f.c_str(), f == app.scenePath)) openScene(app, f);
-      recordWidget(app, "scene.file:" + f);
-    }
-    ImGui::EndCombo();
-  }
-  recordWidget(app, "scene.files");
+  const std::vector<PickerEntry> scenes = pickerEntries(app.sceneFiles);
+  const std::string chosen = pickerCombo(app, "open", "choose a scene", scenes, app.sceneSearch, "scene", app.scenePath);
+  if (!chosen.empty()) openScene(app, chosen);
   helpMarker(
-      "Scenes found in data/scenes and the build's generated scenes.\nYou can also drop a scene or "
-      "preset file on the window.");
+      "Scenes in data/scenes (bundled) and the build's generated scenes; type to search.\nYou can also drop "
+      "a scene or preset file on the window.");
   ImGui::InputText("path", app.pathInput, sizeof app.pathInput);
   recordWidget(app, "scene.path");
   ImGui::SameLine();
@@ -192,34 +185,6 @@ void statsTable(const PaneState& p) {
                        static_cast<unsigned long long>(s.stats.work.nonFinite));
 }
 
-// RMSE against the reference over render time, log-log (the slope of Monte
-// Carlo convergence is -1/2), as passes arrive. Needs two points.
-void errorPlot(const PaneState& p) {
-  const auto& h = p.errorHistory;
-  std::vector<std::pair<double, double>> pts;
-  for (const auto& [t, e] : h)
-    if (t > 0.0 && e > 0.0) pts.emplace_back(std::log10(t), std::log10(e));
-  if (pts.size() < 2) return;
-  double x0 = pts[0].first, x1 = x0, y0 = pts[0].second, y1 = y0;
-  for (const auto& [x, y] : pts) {
-    x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
-  }
-  if (x1 - x0 < 1e-6) x1 = x0 + 1.0;
-  if (y1 - y0 < 1e-6) y1 = y0 + 1.0;
-  ImGui::Text("RMSE vs time (log-log): %.3g s %.4g -> %.3g s %.4g", h.front().first, h.front().second,
-              h.back().first, h.back().second);
-  const float w = ImGui::GetContentRegionAvail().x, hgt = 80.0f * ImGui::GetIO().FontGlobalScale;
-  const ImVec2 o = ImGui::GetCursorScreenPos();
-  ImGui::Dummy(ImVec2(w, hgt));
-  ImDrawList* dl = ImGui::GetWindowDrawList();
-  dl->AddRect(o, ImVec2(o.x + w, o.y + hgt), IM_COL32(120, 120, 120, 255));
-  const auto at = [&](const std::pair<double, double>& q) {
-    return ImVec2(o.x + 4.0f + static_cast<float>((q.first - x0) / (x1 - x0)) * (w - 8.0f),
-                  o.y + hgt - 4.0f - static_cast<float>((q.second - y0) / (y1 - y0)) * (hgt - 8.0f));
-  };
-  for (size_t k = 1; k < pts.size(); ++k) dl->AddLine(at(pts[k - 1]), at(pts[k]), IM_COL32(255, 190, 60, 255), 2.0f);
-}
-
 void paneSection(AppState& app, int i) {
   PaneState& p = app.panes[static_cast<size_t>(i)];
   char title[96];
@@ -282,7 +247,6 @@ void paneSection(AppState& app, int i) {
   if (p.hasError)
     ImGui::Text("vs %c: RMSE %.5g  SSIM %.4f  PSNR %.2f dB", paneLetter(app.compare.reference),
                 p.error.rmse, p.error.ssim, p.error.psnr);
-  if (p.hasError) errorPlot(p);
   for (const auto& [id, what] : p.shown.missingTasks)
     ImGui::TextColored(ImVec4(1, 0.4f, 0.9f, 1), "task %s missing: %s", id.c_str(), what.c_str());
   if (p.shown.phase == PaneSnapshot::Phase::Failed)
@@ -366,8 +330,50 @@ void yourCodeSection(AppState& app) {
   if (open) ImGui::TreePop();
 }
 
+void lectureHallSection(AppState& app) {
+  if (!ImGui::CollapsingHeader("Lecture hall")) return;
+  ImGui::Checkbox("projector labels (P)", &app.projector);
+  recordWidget(app, "hall.projector");
+  helpMarker(
+      "One line per pane in large type, naming only what differs between the panes (technique, "
+      "accelerator, 'depth 2', '64 spp'). On by default in presenter mode.");
+  ImGui::Checkbox("stats under the labels (I)", &app.showStats);
+  if (ImGui::Button("Hide this panel (H)")) app.panelHidden = true;
+  recordWidget(app, "hall.hide");
+  ImGui::Checkbox("cost-of-accuracy plot", &app.showPlot);
+  recordWidget(app, "hall.plot");
+  helpMarker(
+      "Every pane's error (relMSE) against the reference pane over its wall time, both on log "
+      "scales: the price of accuracy, technique by technique. A preset asks for it with \"plot\": true.");
+  if (app.showPlot && app.compare.reference < 0) {
+    ImGui::TextColored(ImVec4(1, 0.8f, 0.4f, 1), "The plot needs a reference pane:");
+    if (ImGui::Button("measure against the last pane")) app.compare.reference = app.paneCount - 1;
+  }
+  static char plotPath[256] = "accuracy_plot";
+  ImGui::InputText("plot file", plotPath, sizeof plotPath);
+  if (ImGui::Button("Save SVG")) {
+    const std::string path = std::string(plotPath) + ".svg";
+    try {
+      saveAccuracyPlotSvg(accuracyPlot(app), path);
+      addMessage(app, "plot " + path, false);
+    } catch (const std::exception& e) {
+      addMessage(app, e.what());
+    }
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Save PNG")) {
+    if (!app.showPlot) addMessage(app, "show the plot first: the PNG is its pixels on screen");
+    else app.plotPngRequest = std::string(plotPath) + ".png";
+  }
+}
+
 void presetSection(AppState& app) {
   if (!ImGui::CollapsingHeader("Preset")) return;
+  const std::vector<PickerEntry> presets = pickerEntries(app.presetFiles);
+  const std::string chosen = pickerCombo(app, "open##preset", "choose a preset", presets, app.presetSearch, "preset", "");
+  if (!chosen.empty() && loadPresetFile(app, chosen))
+    std::snprintf(app.presetInput, sizeof app.presetInput, "%s", chosen.c_str());
+  helpMarker("The bundled demos (data/presets) and each assignment's views; type to search.");
   ImGui::InputText("file", app.presetInput, sizeof app.presetInput);
   if (ImGui::Button("Save")) savePresetFile(app, app.presetInput);
   ImGui::SameLine();
@@ -407,6 +413,14 @@ void messagesSection(AppState& app) {
 
 }  // namespace
 
+// Remembers the visible content area of the current window (the panel, or an
+// open combo's list: no title bar, padding or scrolled-out part), under `name`.
+void recordWindow(AppState& app, const std::string& name) {
+  const ImVec2 pos = ImGui::GetWindowPos(), scroll(ImGui::GetScrollX(), ImGui::GetScrollY());
+  const ImVec2 a = ImGui::GetWindowContentRegionMin(), b = ImGui::GetWindowContentRegionMax();
+  app.widgetRects[name] = {pos.x + a.x + scroll.x, pos.y + a.y + scroll.y, b.x - a.x, b.y - a.y};
+}
+
 void recordWidget(AppState& app, const std::string& name) {
   const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
   app.widgetRects[name] = {a.x, a.y, b.x - a.x, b.y - a.y};
@@ -440,6 +454,7 @@ void drawSidePanel(AppState& app, GLFWwindow* window, float width, float height)
   sceneSection(app);
   cameraSection(app);
   layoutSection(app);
+  lectureHallSection(app);
   for (int i = 0; i < kMaxPanes; ++i)
     if (paneActive(app, i)) paneSection(app, i);
   rayTreeSection(app);

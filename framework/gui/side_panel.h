@@ -17,6 +17,9 @@ void drawSidePanel(AppState& app, GLFWwindow* window, float width, float height)
 // Remembers where the last ImGui item was drawn, under `name` (window
 // coordinates), for the screenshot sidecar and scripted UI tests.
 void recordWidget(AppState& app, const std::string& name);
+// Remembers the visible content area of the current window (the panel, or an
+// open combo's list), under `name`.
+void recordWindow(AppState& app, const std::string& name);
 
 // Switches between windowed and fullscreen on the primary monitor.
 void toggleFullscreen(AppState& app, GLFWwindow* window);

@@ -1,5 +1,7 @@
 #include "gui/slide_panel.h"
 
+#include <algorithm>
+#include <cfloat>
 #include <chrono>
 #include <cmath>
 #include <string>
@@ -53,43 +55,71 @@ ImVec4 colourFor(SpanStyle style, const ImVec4& base) {
   return base;
 }
 
-// Word-wrapped text of mixed spans, starting at the cursor, lines indented to `left`.
+constexpr float kScriptScale = 0.7f;  // sub- and superscripts without a Unicode form, drawn small
+
+// Word-wrapped text of mixed spans, starting at the cursor, lines from `left` to `right` (window
+// coordinates). Formulas never break (wrapSpans): one too wide is shrunk, and if still too wide the
+// line runs past `right` and the panel scrolls sideways. `centre` centres each line (display math).
 void drawSpans(const PresenterState& p, const std::vector<TextSpan>& spans, ImFont* base, const ImVec4& colour,
-               float left, float right) {
-  bool first = true;
-  for (const TextSpan& span : spans) {
-    ImGui::PushFont(fontFor(p, span.style, base));
-    const ImVec4 c = colourFor(span.style, colour);
-    size_t i = 0;
-    while (i < span.text.size()) {
-      if (span.text[i] == '\n') {
-        ImGui::NewLine();
-        ImGui::SetCursorPosX(left);
-        first = true;
-        ++i;
-        continue;
-      }
-      // A word and the spaces after it; code and math keep their spaces inside one token.
-      size_t end = span.text.find_first_of(" \n", i);
-      if (end == std::string::npos) end = span.text.size();
-      while (end < span.text.size() && span.text[end] == ' ') ++end;
-      const std::string token = span.text.substr(i, end - i);
-      i = end;
-      const float width = ImGui::CalcTextSize(token.c_str()).x;
-      if (!first) {
-        ImGui::SameLine(0.0f, 0.0f);
-        if (ImGui::GetCursorPosX() + width > right && ImGui::GetCursorPosX() > left + 1.0f) {
-          ImGui::NewLine();
-          ImGui::SetCursorPosX(left);
-        }
-      } else {
-        ImGui::SetCursorPosX(left);
-      }
-      ImGui::TextColored(c, "%s", token.c_str());
-      first = false;
+               float left, float right, bool centre = false) {
+  const float globalScale = ImGui::GetFontSize() / ImGui::GetFont()->FontSize;  // window and UI font scale
+  const auto sizeOf = [&](const TextSpan& s) {
+    return fontFor(p, s.style, base)->FontSize * globalScale * (s.script != 0 ? kScriptScale : 1.0f);
+  };
+  const MeasureText measure = [&](const std::string& text, const TextSpan& s) {
+    return fontFor(p, s.style, base)->CalcTextSizeA(sizeOf(s), FLT_MAX, 0.0f, text.c_str(), text.c_str() + text.size()).x;
+  };
+  const float width = std::max(right - left, 1.0f);
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  for (const LaidLine& line : wrapSpans(spans, width, measure)) {
+    const float baseSize = base->FontSize * globalScale * line.scale;
+    bool sub = false, sup = false;
+    for (const LaidPiece& piece : line.pieces) {
+      sub = sub || spans[piece.span].script < 0;
+      sup = sup || spans[piece.span].script > 0;
     }
-    ImGui::PopFont();
+    const float top = sup ? baseSize * 0.12f : 0.0f;  // room above for superscripts, below for subscripts
+    const float height = top + baseSize + (sub ? baseSize * 0.2f : 0.0f);
+    ImGui::SetCursorPosX(centre && line.width < width ? left + (width - line.width) * 0.5f : left);
+    const ImVec2 origin = ImGui::GetCursorScreenPos();
+    for (const LaidPiece& piece : line.pieces) {
+      const TextSpan& span = spans[piece.span];
+      const float size = sizeOf(span) * line.scale;
+      const float dy = span.script < 0 ? baseSize * 0.42f : span.script > 0 ? -baseSize * 0.1f : 0.0f;
+      draw->AddText(fontFor(p, span.style, base), size, ImVec2(origin.x + piece.x, origin.y + top + dy),
+                    ImGui::GetColorU32(colourFor(span.style, colour)), piece.text.c_str(),
+                    piece.text.c_str() + piece.text.size());
+    }
+    ImGui::Dummy(ImVec2(std::max(line.width, 1.0f), height));  // reserves the line (and widens the scroll area)
   }
+}
+
+// A code block in a child window of its own: shrunk a little to fit, else scrolled sideways, never clipped.
+void drawCode(const PresenterState& p, const std::string& code, int id, float left, float width) {
+  ImFont* font = p.code ? p.code : ImGui::GetIO().Fonts->Fonts[0];
+  std::string text = code;
+  while (!text.empty() && text.back() == '\n') text.pop_back();
+  ImGui::PushFont(font);
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const ImVec2 size = ImGui::CalcTextSize(text.c_str());
+  const float inner = width - style.WindowPadding.x * 2.0f;
+  const float scale = size.x > inner ? std::max(0.75f, inner / size.x) : 1.0f;
+  const bool scrolls = size.x * scale > inner;
+  const float height = size.y * scale + style.WindowPadding.y * 2.0f + (scrolls ? style.ScrollbarSize : 0.0f);
+  ImGui::SetCursorPosX(left);
+  ImGui::PushStyleColor(ImGuiCol_ChildBg, ImVec4(0.0f, 0.0f, 0.0f, 0.25f));
+  ImGui::PushID(id);
+  ImGui::BeginChild("##code", ImVec2(width, height), false,
+                    ImGuiWindowFlags_HorizontalScrollbar | ImGuiWindowFlags_NoScrollWithMouse |
+                        ImGuiWindowFlags_AlwaysUseWindowPadding);
+  ImGui::SetWindowFontScale(scale);
+  ImGui::PushStyleColor(ImGuiCol_Text, kCode);
+  ImGui::TextUnformatted(text.c_str(), text.c_str() + text.size());
+  ImGui::PopStyleColor();
+  ImGui::EndChild();
+  ImGui::PopID();
+  ImGui::PopStyleColor();
+  ImGui::PopFont();
 }
 
 void drawBlocks(AppState& app, const std::vector<TextBlock>& blocks, float width) {
@@ -97,6 +127,7 @@ void drawBlocks(AppState& app, const std::vector<TextBlock>& blocks, float width
   ImFont* body = ImGui::GetIO().Fonts->Fonts[0];
   const float indentStep = ImGui::GetFontSize() * 1.4f;
   const float base = ImGui::GetCursorPosX();
+  int codeBlock = 0;
   for (const TextBlock& b : blocks) {
     switch (b.kind) {
       case BlockKind::Heading: {
@@ -111,34 +142,18 @@ void drawBlocks(AppState& app, const std::vector<TextBlock>& blocks, float width
         ImGui::TextColored(kHeading, "%s", b.marker.c_str());
         ImGui::SameLine(0.0f, 0.0f);
         ImGui::SetCursorPosX(left);
-        std::vector<TextSpan> spans = b.spans;
-        drawSpans(p, spans, body, kText, left, base + width);
+        drawSpans(p, b.spans, body, kText, left, base + width);
         break;
       }
       case BlockKind::Code:
-        for (const TextSpan& s : b.spans) {
-          ImGui::PushFont(p.code ? p.code : body);
-          ImGui::SetCursorPosX(base + indentStep);
-          ImGui::TextColored(kCode, "%s", s.text.c_str());
-          ImGui::PopFont();
-        }
+        for (const TextSpan& s : b.spans)
+          drawCode(p, s.text, ++codeBlock, base + indentStep, std::max(width - indentStep, 50.0f));
         break;
-      case BlockKind::DisplayMath: {
-        std::string text;
-        for (const TextSpan& s : b.spans) text += s.text;
-        const float w = ImGui::CalcTextSize(text.c_str()).x;
+      case BlockKind::DisplayMath:
         ImGui::Spacing();
-        if (w < width) {
-          ImGui::SetCursorPosX(base + (width - w) * 0.5f);
-          ImGui::TextColored(kMath, "%s", text.c_str());
-        } else {
-          ImGui::PushTextWrapPos(base + width);
-          ImGui::TextColored(kMath, "%s", text.c_str());
-          ImGui::PopTextWrapPos();
-        }
+        drawSpans(p, b.spans, body, kMath, base, base + width, true);
         ImGui::Spacing();
         break;
-      }
       case BlockKind::TableRow:
         drawSpans(p, b.spans, b.level == 1 && p.bold ? p.bold : body, kText, base, base + width);
         break;
@@ -216,7 +231,9 @@ void drawSlidePanel(AppState& app, float x, float y, float w, float h) {
   const ImGuiStyle& style = ImGui::GetStyle();
   const float buttonH = ImGui::GetFrameHeight() * 1.6f;
   const float footer = buttonH + ImGui::GetTextLineHeightWithSpacing() * 2.0f + style.ItemSpacing.y * 3.0f;
-  ImGui::BeginChild("##slidetext", ImVec2(0, std::max(h - footer - style.WindowPadding.y * 2.0f, 50.0f)));
+  // A formula too wide even when shrunk widens the text: the panel then scrolls sideways.
+  ImGui::BeginChild("##slidetext", ImVec2(0, std::max(h - footer - style.WindowPadding.y * 2.0f, 50.0f)), false,
+                    ImGuiWindowFlags_HorizontalScrollbar);
   const float width = ImGui::GetContentRegionAvail().x - style.ScrollbarSize;
   drawBlocks(app, p.text[static_cast<size_t>(p.index)], width);
   if (p.showNotes && !p.notes[static_cast<size_t>(p.index)].empty()) {

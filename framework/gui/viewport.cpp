@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -12,7 +13,9 @@
 
 #include "core/error.h"
 #include "core/image.h"
+#include "gui/accuracy_plot.h"
 #include "gui/app_actions.h"
+#include "gui/pane_labels.h"
 #include "gui/ray_inspector.h"
 #include "gui/structure_overlay.h"
 #include "gui/view_camera.h"
@@ -101,7 +104,56 @@ bool inFocus(const AppState& app, const std::string& id) {
   return app.assignment.empty() || id.rfind(app.assignment + ".", 0) == 0;
 }
 
-std::vector<std::string> paneCaption(const AppState& app, int index) {
+double secondsSince(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+// ", about 12 s left" for a phase `fraction` done after `seconds`, once the estimate means something.
+std::string timeLeft(double fraction, double seconds) {
+  if (fraction < 0.02 || fraction >= 1.0 || seconds < 1.0) return "";
+  char buf[64];
+  const double left = seconds * (1.0 - fraction) / fraction;
+  if (left < 90.0)
+    std::snprintf(buf, sizeof buf, ", about %.0f s left", std::max(left, 1.0));
+  else
+    std::snprintf(buf, sizeof buf, ", about %.0f min left", left / 60.0);
+  return buf;
+}
+
+// What the pane's worker does now, with its progress and the time so far:
+// "form factors (hemicube, 812 patches)  37 %  12.0 s, about 20 s left", "pass 3/16  47 %  1.20 s".
+std::string phaseLine(const PaneSnapshot& s) {
+  char buf[256];
+  const double f = s.phaseFraction;
+  char pct[16] = "";
+  if (f >= 0.0) std::snprintf(pct, sizeof pct, "  %.0f %%", 100.0 * f);
+  const std::string left = timeLeft(f, secondsSince(s.phaseStarted));
+  const bool working = s.phase == PaneSnapshot::Phase::Building || s.phase == PaneSnapshot::Phase::Rendering;
+  if (working && !s.phaseName.empty() && s.phaseName != "pass") {
+    const std::string name = s.phaseName == "preview" ? "low-resolution preview" : s.phaseName;
+    std::snprintf(buf, sizeof buf, "%s%s  %.1f s%s", name.c_str(), pct, s.elapsed(), left.c_str());
+    return buf;
+  }
+  if (s.phase == PaneSnapshot::Phase::Building) {
+    std::snprintf(buf, sizeof buf, "building the accelerator  %.1f s", s.elapsed());
+    return buf;
+  }
+  const double rays = static_cast<double>(s.stats.work.totalRays());
+  const std::string rate =
+      s.passes > 0 && s.passSeconds > 0 && rays > 0 ? "  " + formatRate(rays / s.passSeconds) : "";
+  const bool rendering = s.phase == PaneSnapshot::Phase::Rendering;
+  std::snprintf(buf, sizeof buf, "pass %d/%d%s  %.2f s%s%s%s", std::min(s.passes + (rendering ? 1 : 0), std::max(s.totalPasses, 1)),
+                s.totalPasses, rendering ? pct : "", s.elapsed(), rate.c_str(), rendering ? left.c_str() : "",
+                s.phase == PaneSnapshot::Phase::Done ? "  done" : "");
+  return buf;
+}
+
+// Whether the pane's texture shows its current image (not one from before a technique switch).
+bool imageOnScreen(const PaneState& p) {
+  return p.texture.valid() && p.shown.image && p.texture.version() > p.shown.clearedAt;
+}
+
+std::vector<std::string> paneCaption(const AppState& app, int index, const std::string& differs) {
   const PaneState& p = app.panes[static_cast<size_t>(index)];
   const PaneSnapshot& s = p.shown;
   std::vector<std::string> lines;
@@ -111,7 +163,7 @@ std::vector<std::string> paneCaption(const AppState& app, int index) {
                     " per camera ray");
   } else {
     lines.push_back(std::string(1, paneLetter(index)) + "  " + p.technique + "  /  " +
-                    p.accelerator);
+                    p.accelerator + (differs.empty() ? "" : "  |  " + differs));
   }
   // The student tree: whose code this picture ran, for the tasks in focus.
   std::vector<std::string> yours, reference;
@@ -124,20 +176,15 @@ std::vector<std::string> paneCaption(const AppState& app, int index) {
   char buf[160];
   switch (s.phase) {
     case PaneSnapshot::Phase::Building:
-      lines.emplace_back("building the accelerator...");
-      break;
     case PaneSnapshot::Phase::Rendering:
     case PaneSnapshot::Phase::Done: {
-      if (s.preview) {
-        lines.emplace_back("low-resolution preview; pass 1 is rendering");
-        break;
+      lines.push_back(phaseLine(s));
+      // Where the time went, once more than the passes took it.
+      if (s.phase == PaneSnapshot::Phase::Done && s.seconds - s.passSeconds > 0.05) {
+        std::snprintf(buf, sizeof buf, "time: build %.2f + preview %.2f + prepare %.2f + passes %.2f s",
+                      s.requestBuildSeconds, s.previewSeconds, s.prepareSeconds, s.passSeconds);
+        lines.emplace_back(buf);
       }
-      const double rays = static_cast<double>(s.stats.work.totalRays());
-      const std::string rate =
-          s.passes > 0 && s.seconds > 0 && rays > 0 ? "  " + formatRate(rays / s.seconds) : "";
-      std::snprintf(buf, sizeof buf, "pass %d/%d  %.2f s%s%s", s.passes, s.totalPasses, s.elapsed(),
-                    rate.c_str(), s.phase == PaneSnapshot::Phase::Done ? "  done" : "");
-      lines.emplace_back(buf);
       break;
     }
     case PaneSnapshot::Phase::Failed:
@@ -151,8 +198,8 @@ std::vector<std::string> paneCaption(const AppState& app, int index) {
       break;
   }
   if (p.hasError) {
-    std::snprintf(buf, sizeof buf, "vs %c: RMSE %.4g  SSIM %.4f", paneLetter(app.compare.reference),
-                  p.error.rmse, p.error.ssim);
+    std::snprintf(buf, sizeof buf, "vs %c: relMSE %.3g  RMSE %.4g  SSIM %.4f", paneLetter(app.compare.reference),
+                  p.error.relmse, p.error.rmse, p.error.ssim);
     lines.emplace_back(buf);
   }
   if (app.scene && s.view == PaneView::Image) {
@@ -319,6 +366,89 @@ void errorToast(ImDrawList* dl, AppState& app, Rect area) {
   }
 }
 
+
+// The font and size of projector labels: the large font when built, else the UI font scaled up.
+ImFont* labelFont(const AppState& app, float* size) {
+  if (app.largeFont) {
+    *size = app.largeFont->FontSize;
+    return app.largeFont;
+  }
+  *size = ImGui::GetFontSize() * 1.25f;
+  return ImGui::GetFont();
+}
+
+// The projector label of pane i: one line in large type at the top-left of
+// its image, cut to the image's width; returns the box's height.
+float projectorLabel(AppState& app, ImDrawList* dl, int i, const std::string& text, Rect r) {
+  float size = 0.0f;
+  ImFont* font = labelFont(app, &size);
+  const float pad = 0.15f * size, accent = 0.15f * size;
+  const auto width = [&](const std::string& t) { return font->CalcTextSizeA(size, FLT_MAX, 0.0f, t.c_str()).x; };
+  std::string shown = text;
+  const float room = r.w - 2 * pad - accent;
+  if (width(shown) > room) {
+    while (!shown.empty() && width(shown + "...") > room) shown.pop_back();
+    shown += "...";
+  }
+  const float w = std::min(width(shown) + 2 * pad + accent, r.w), h = size + 2 * pad;
+  const auto c = paneColor(i);
+  dl->AddRectFilled(ImVec2(r.x, r.y), ImVec2(r.x + w, r.y + h), IM_COL32(0, 0, 0, 190), 3.0f);
+  dl->AddRectFilled(ImVec2(r.x, r.y), ImVec2(r.x + accent, r.y + h), IM_COL32(c[0], c[1], c[2], 255));
+  dl->AddText(font, size, ImVec2(r.x + accent + pad, r.y + pad), IM_COL32_WHITE, shown.c_str());
+  app.overlayRects.push_back({r.x, r.y, w, h});
+  app.labelRects.push_back({r.x, r.y, w, h});
+  app.paneLabels.push_back(shown);
+  return h;
+}
+
+// What a pane shows while it has no picture of its current technique yet: a
+// neutral card with the technique, the phase and its progress (never the
+// previous technique's image).
+void drawPlaceholder(AppState& app, ImDrawList* dl, const PaneState& p, Rect r) {
+  dl->AddRectFilled(ImVec2(r.x, r.y), ImVec2(r.x + r.w, r.y + r.h), IM_COL32(52, 52, 60, 255));
+  float size = 0.0f;
+  ImFont* font = labelFont(app, &size);
+  const PaneSnapshot& s = p.shown;
+  std::string status = s.phase == PaneSnapshot::Phase::Idle     ? "waiting for the scene"
+                       : s.phase == PaneSnapshot::Phase::Failed ? "failed"
+                       : s.phase == PaneSnapshot::Phase::Stopped ? "stopped"
+                                                                 : phaseLine(s);
+  const float cy = r.y + r.h / 2;
+  const auto centred = [&](const std::string& t, float y, ImFont* f, float sz) {
+    const float tw = f->CalcTextSizeA(sz, FLT_MAX, r.w - 16.0f, t.c_str()).x;
+    dl->AddText(f, sz, ImVec2(r.x + std::max((r.w - tw) / 2, 8.0f), y), IM_COL32(235, 235, 235, 255), t.c_str(),
+                nullptr, r.w - 16.0f);
+  };
+  centred(p.technique, cy - size * 1.6f, font, size);
+  centred(status, cy, ImGui::GetFont(), ImGui::GetFontSize());
+  if (s.phaseFraction >= 0.0 && (s.phase == PaneSnapshot::Phase::Rendering || s.phase == PaneSnapshot::Phase::Building)) {
+    const float bw = r.w * 0.6f, bh = 0.35f * size, bx = r.x + (r.w - bw) / 2, by = cy + ImGui::GetTextLineHeight() * 1.6f;
+    dl->AddRectFilled(ImVec2(bx, by), ImVec2(bx + bw, by + bh), IM_COL32(30, 30, 34, 255), bh / 2);
+    dl->AddRectFilled(ImVec2(bx, by), ImVec2(bx + bw * static_cast<float>(std::clamp(s.phaseFraction, 0.0, 1.0)), by + bh),
+                      IM_COL32(90, 170, 250, 255), bh / 2);
+  }
+}
+
+// Splits `area` between the panes and the cost-of-accuracy plot: beside them
+// or under them, whichever leaves the panes' pictures larger.
+Rect layoutPlot(AppState& app, Rect area, Rect* plot) {
+  constexpr float kShare = 0.4f;  // of the width or height, for the plot
+  const Rect besidePanes{area.x, area.y, area.w * (1 - kShare), area.h};
+  const Rect underPanes{area.x, area.y, area.w, area.h * (1 - kShare)};
+  const PaneState& first = app.panes[0];
+  const int iw = first.texture.valid() ? first.texture.width() : 4, ih = first.texture.valid() ? first.texture.height() : 3;
+  const auto imageArea = [&](Rect panes) {
+    const Rect r = fitImage(cellOf(0, app.paneCount, panes), iw, ih, 6.0f);
+    return r.w * r.h;
+  };
+  if (imageArea(besidePanes) >= imageArea(underPanes)) {
+    *plot = {area.x + besidePanes.w, area.y, area.w - besidePanes.w, area.h};
+    return besidePanes;
+  }
+  *plot = {area.x, area.y + underPanes.h, area.w, area.h - underPanes.h};
+  return underPanes;
+}
+
 void drawViewportContent(AppState& app, float x, float y, float w, float h);  // below
 
 }  // namespace
@@ -331,12 +461,32 @@ void drawViewport(AppState& app, float x, float y, float w, float h) {
 namespace {
 void drawViewportContent(AppState& app, float x, float y, float w, float h) {
   ImDrawList* dl = ImGui::GetBackgroundDrawList();
-  const Rect area{x, y, w, h};
+  Rect area{x, y, w, h};
   dl->AddRectFilled(ImVec2(x, y), ImVec2(x + w, y + h), IM_COL32(28, 28, 32, 255));
   for (auto& r : app.paneRects) r = {0, 0, 0, 0};
   app.overlayRects.clear();
+  app.labelRects.clear();
+  app.paneLabels.clear();
   app.compareRect = {0, 0, 0, 0};
+  app.plotRect = {0, 0, 0, 0};
   uploadFinished(app);
+  if (app.showPlot) {
+    Rect plot{};
+    area = layoutPlot(app, area, &plot);
+    drawAccuracyPlot(dl, accuracyPlot(app), plot.x, plot.y, plot.w, plot.h);
+    app.plotRect = {plot.x, plot.y, plot.w, plot.h};
+  }
+  const std::vector<std::string> labels = distinguishingLabels(app);
+  const std::vector<std::string> differs = parameterDifferences(app);
+  const auto differsOf = [&](int i) { return i < static_cast<int>(differs.size()) ? differs[static_cast<size_t>(i)] : std::string(); };
+  // A pane's caption: in projector mode its one-line label (and the stats on I), else the full caption.
+  const auto caption = [&](int i, Rect r, float maxWidth) {
+    float top = 0.0f;
+    if (app.projector && i < static_cast<int>(labels.size()))
+      top = projectorLabel(app, dl, i, labels[static_cast<size_t>(i)], {r.x, r.y, maxWidth, r.h});
+    if (!app.projector || app.showStats)
+      captionBox(app.overlayRects, dl, r.x, r.y + top, paneCaption(app, i, differsOf(i)), IM_COL32(0, 0, 0, 170), maxWidth);
+  };
 
   if (app.compare.mode == CompareMode::SideBySide) {
     for (int i = 0; i < app.paneCount; ++i) {
@@ -344,12 +494,16 @@ void drawViewportContent(AppState& app, float x, float y, float w, float h) {
       Rect cell = cellOf(i, app.paneCount, area);
       const float bannerW = cell.w - 12.0f;  // the banner spans the cell, under the picture
       cell.h = std::max(cell.h - bannerSpace(app, p, bannerW), 1.0f);
-      const Rect r = p.texture.valid() ? fitImage(cell, p.texture.width(), p.texture.height(), 6.0f)
-                                       : fitImage(cell, 1, 1, 6.0f);
-      if (p.texture.valid())
+      const bool current = imageOnScreen(p);
+      const RenderSettings size = app.scene ? renderSettings(app, p) : RenderSettings{};
+      const Rect r = current ? fitImage(cell, p.texture.width(), p.texture.height(), 6.0f)
+                             : fitImage(cell, size.width, size.height, 6.0f);
+      if (current)
         dl->AddImage(p.texture.imguiId(), ImVec2(r.x, r.y), ImVec2(r.x + r.w, r.y + r.h));
+      else
+        drawPlaceholder(app, dl, p, r);
       app.paneRects[static_cast<size_t>(i)] = {r.x, r.y, r.w, r.h};
-      const float lh = p.texture.valid() && p.texture.legendMax() > 0.0f
+      const float lh = current && p.texture.legendMax() > 0.0f
                            ? 34.0f * ImGui::GetIO().FontGlobalScale
                            : 0.0f;
       if (lh > 0.0f) {
@@ -367,7 +521,7 @@ void drawViewportContent(AppState& app, float x, float y, float w, float h) {
         const float py = r.y + app.inspector.pixel.y / static_cast<float>(camera.height) * r.h;
         dl->AddCircle(ImVec2(px, py), 6.0f, IM_COL32(255, 0, 255, 255), 16, 2.0f);
       }
-      captionBox(app.overlayRects, dl, r.x, r.y, paneCaption(app, i), IM_COL32(0, 0, 0, 170), r.w);
+      caption(i, r, r.w);
       paneBanners(dl, app, i, r, cell.x + 6.0f, bannerW);
     }
     return;
@@ -381,10 +535,10 @@ void drawViewportContent(AppState& app, float x, float y, float w, float h) {
   if (app.compare.mode == CompareMode::Wipe) {
     const float split = std::clamp(app.compare.wipe, 0.0f, 1.0f);
     const float sx = r.x + r.w * split;
-    if (a.texture.valid())
+    if (imageOnScreen(a))
       dl->AddImage(a.texture.imguiId(), ImVec2(r.x, r.y), ImVec2(sx, r.y + r.h), ImVec2(0, 0),
                    ImVec2(split, 1));
-    if (b.texture.valid())
+    if (imageOnScreen(b))
       dl->AddImage(b.texture.imguiId(), ImVec2(sx, r.y), ImVec2(r.x + r.w, r.y + r.h),
                    ImVec2(split, 0), ImVec2(1, 1));
     dl->AddLine(ImVec2(sx, r.y), ImVec2(sx, r.y + r.h), IM_COL32(255, 255, 255, 230), 2.0f);
@@ -393,13 +547,16 @@ void drawViewportContent(AppState& app, float x, float y, float w, float h) {
     app.overlayRects.push_back({sx - handle - 1, r.y, 2 * handle + 2, r.h});
     app.paneRects[static_cast<size_t>(ia)] = {r.x, r.y, sx - r.x, r.h};
     app.paneRects[static_cast<size_t>(ib)] = {sx, r.y, r.x + r.w - sx, r.h};
-    captionBox(app.overlayRects, dl, r.x, r.y, paneCaption(app, ia), IM_COL32(0, 0, 0, 170),
-               r.w / 2);
-    const auto lines = paneCaption(app, ib);
-    float bw = 0;
-    for (const auto& l : lines) bw = std::max(bw, ImGui::CalcTextSize(l.c_str()).x + 8.0f);
-    bw = std::min(bw, r.w / 2);
-    captionBox(app.overlayRects, dl, r.x + r.w - bw, r.y, lines, IM_COL32(0, 0, 0, 170), bw);
+    caption(ia, r, r.w / 2);
+    if (app.projector) {
+      caption(ib, {r.x + r.w / 2, r.y, r.w / 2, r.h}, r.w / 2);
+    } else {
+      const auto lines = paneCaption(app, ib, differsOf(ib));
+      float bw = 0;
+      for (const auto& l : lines) bw = std::max(bw, ImGui::CalcTextSize(l.c_str()).x + 8.0f);
+      bw = std::min(bw, r.w / 2);
+      captionBox(app.overlayRects, dl, r.x + r.w - bw, r.y, lines, IM_COL32(0, 0, 0, 170), bw);
+    }
     paneBanners(dl, app, ia, {r.x, r.y, r.w / 2, r.h}, r.x, r.w / 2);
     paneBanners(dl, app, ib, {r.x + r.w / 2, r.y, r.w / 2, r.h}, r.x + r.w / 2, r.w / 2);
     return;

@@ -120,7 +120,7 @@ ViewPreset parsePreset(const std::string& text, const std::string& file,
               std::to_string(kFormatVersion) +
               " (is this a scene? open scenes with `lightlab gui SCENE`)");
   root.allowOnly({"lightlab_preset", "description", "scene", "camera", "width", "height", "panes",
-                  "pane_count", "compare", "ui_scale", "exposure", "structure", "inspect"});
+                  "pane_count", "compare", "ui_scale", "exposure", "structure", "inspect", "plot"});
 
   ViewPreset p;
   if (root.has("description")) p.description = root.string("description");
@@ -133,6 +133,7 @@ ViewPreset parsePreset(const std::string& text, const std::string& file,
   p.height = root.integer("height", 0, 0, 16384);
   p.exposure = root.number("exposure", 0.0f, -20.0f, 20.0f);
   p.uiScale = root.number("ui_scale", 1.0f, 0.5f, 4.0f);
+  p.showPlot = root.boolean("plot", false);
   if (root.has("structure")) {
     const JsonNode st = root.child("structure");
     st.requireObject();
@@ -213,6 +214,7 @@ nlohmann::json presetToJson(const ViewPreset& p, const std::string& baseDir) {
   j["ui_scale"] = p.uiScale;
   j["pane_count"] = p.paneCount;
   j["structure"] = {{"show", p.showStructure}, {"depth", p.structureDepth}};
+  if (p.showPlot) j["plot"] = true;
   if (p.inspectPane >= 0)
     j["inspect"] = {{"pane", p.inspectPane},
                     {"pixel", {static_cast<int>(p.inspectPixel.x), static_cast<int>(p.inspectPixel.y)}}};

@@ -55,6 +55,7 @@ struct ViewPreset {
   int structureDepth = 3;      // at this depth (root = 0)
   int inspectPane = -1;        // the ray tree of this pane's pixel is shown (-1 = none)
   Vec2 inspectPixel{0.0f};     // continuous image position at the render size
+  bool showPlot = false;       // the cost-of-accuracy plot (error against compare.reference over time)
 };
 
 // Reads a preset, validating every name and value against the registries

@@ -7,6 +7,7 @@
 #include <tbb/blocked_range2d.h>
 #include <tbb/parallel_for.h>
 
+#include "core/phase_progress.h"
 #include "render/student_task.h"
 
 namespace ll {
@@ -40,6 +41,10 @@ void PixelTechnique::renderPass(const RenderContext& ctx, int pass, FrameBuffer&
   const int spp = samplesPerPixel(ctx);
   const int w = fb.width(), h = fb.height();
   std::mutex merge;
+  // The pass's progress, in twentieths of its tiles, for the phase sink (the GUI pane's caption).
+  const PhaseSink* sink = currentPhaseSink();
+  const int tiles = ((w + kTile - 1) / kTile) * ((h + kTile - 1) / kTile);
+  std::atomic<int> tilesDone{0};
   tbb::parallel_for(
       tbb::blocked_range2d<int>(0, h, kTile, 0, w, kTile),
       [&](const tbb::blocked_range2d<int>& tile) {
@@ -66,8 +71,13 @@ void PixelTechnique::renderPass(const RenderContext& ctx, int pass, FrameBuffer&
             fb.add(x, y, value);
             if (takeStubFlag()) fb.markStub(x, y);
           }
-        std::lock_guard lock(merge);
-        counters.add(local);
+        {
+          std::lock_guard lock(merge);
+          counters.add(local);
+        }
+        const int done = ++tilesDone;
+        if (sink && *sink && (done * 20) / tiles != ((done - 1) * 20) / tiles)
+          (*sink)("pass", static_cast<double>(done) / tiles);
       },
       tbb::simple_partitioner());
 }

@@ -61,31 +61,62 @@ std::string katexCss(const fs::path& dir) {
   return out;
 }
 
+// Text beside the figure; a slide whose equation, code or table is too wide for its column puts the
+// figure under the text instead (class "stacked", set by kScript), and what is still too wide scrolls
+// sideways inside its own box: text, equations and figures never overlap.
 constexpr const char* kStyle = R"(
 body { margin: 0; background: #2b2b30; font: 22px/1.4 "DejaVu Sans", "Helvetica Neue", Arial, sans-serif; color: #1d1d1f; }
 section.slide { box-sizing: border-box; width: min(1280px, 96vw); min-height: min(720px, 54vw); margin: 2vw auto;
   padding: 36px 48px; background: #fff; border-radius: 6px; display: flex; gap: 36px; align-items: flex-start; }
-section.slide .text { flex: 1 1 50%; min-width: 0; }
-section.slide figure { flex: 0 1 50%; margin: 0; text-align: center; }
-section.slide figure img { max-width: 100%; image-rendering: auto; border: 1px solid #ccc; }
-section.slide figcaption { font-size: 16px; color: #555; margin-top: 6px; }
+section.slide .text { flex: 1 1 0; min-width: 0; }
+section.slide figure { flex: 0 1 auto; max-width: 50%; margin: 0; text-align: center; }
+section.slide figure img { display: block; max-width: 100%; height: auto; margin: 0 auto; image-rendering: auto;
+  border: 1px solid #ccc; box-sizing: border-box; }
+section.slide.stacked { flex-direction: column; align-items: stretch; }
+section.slide.stacked figure { max-width: 100%; align-self: center; }
+section.slide figcaption { font-size: 16px; color: #555; margin-top: 6px; overflow-wrap: anywhere; }
 section.slide .failed { border: 2px dashed #c00; color: #c00; padding: 20px; font-size: 16px; }
 h1 { font-size: 44px; margin: 0 0 18px; } h2 { font-size: 34px; margin: 0 0 16px; color: #123d6a; }
+h1, h2, h3, p, li { overflow-wrap: break-word; }
 code { background: #eef1f5; padding: 1px 5px; border-radius: 3px; font-size: 0.9em; }
-pre code { display: block; padding: 10px; overflow-x: auto; }
-table { border-collapse: collapse; font-size: 18px; } td, th { border: 1px solid #bbb; padding: 4px 10px; }
+pre { max-width: 100%; overflow-x: auto; } pre code { display: block; padding: 10px; white-space: pre; }
+table { border-collapse: collapse; font-size: 18px; display: block; max-width: 100%; overflow-x: auto; }
+td, th { border: 1px solid #bbb; padding: 4px 10px; }
 aside.notes { display: none; margin-top: 18px; padding: 10px; background: #fff8d8; font-size: 17px; }
 body.show-notes aside.notes { display: block; }
 .counter { float: right; color: #888; font-size: 15px; }
-x-equation[type=display] { display: block; text-align: center; margin: 12px 0; }
+x-equation[type=display] { display: block; text-align: center; margin: 12px 0; max-width: 100%;
+  overflow-x: auto; overflow-y: hidden; padding: 2px 0; }
+x-equation[type=display] .katex-display { margin: 0; }
 @media print { body { background: #fff; } section.slide { break-after: page; margin: 0 auto; } }
 )";
 
-// Typesets md4c's <x-equation> elements; keys step through the slides.
+// Typesets md4c's <x-equation> elements, lays out the slides whose content is too wide for a column
+// (figure under the text; an equation still too wide shrinks to 60 %, then scrolls); keys step
+// through the slides.
 constexpr const char* kScript = R"(
 document.querySelectorAll('x-equation').forEach(function (e) {
   katex.render(e.textContent, e, {displayMode: e.getAttribute('type') === 'display', throwOnError: false});
 });
+(function () {
+  function tooWide(e) { return e.scrollWidth > e.clientWidth + 1; }
+  function fit() {
+    var wide = 'x-equation[type=display], pre, table';
+    document.querySelectorAll('x-equation[type=display]').forEach(function (e) { e.style.fontSize = ''; });
+    document.querySelectorAll('section.slide').forEach(function (s) {
+      s.classList.remove('stacked');
+      if (s.querySelector('figure') && Array.prototype.some.call(s.querySelectorAll(wide), tooWide))
+        s.classList.add('stacked');
+    });
+    document.querySelectorAll('x-equation[type=display]').forEach(function (e) {
+      if (tooWide(e)) e.style.fontSize = Math.max(60, Math.floor(100 * e.clientWidth / e.scrollWidth)) + '%';
+    });
+    document.body.setAttribute('data-laid-out', '1');
+  }
+  fit();
+  window.addEventListener('resize', fit);
+  if (document.fonts && document.fonts.ready) document.fonts.ready.then(fit);
+})();
 (function () {
   var slides = Array.prototype.slice.call(document.querySelectorAll('section.slide'));
   function current() {
@@ -127,7 +158,11 @@ std::string deckHtml(const Deck& deck, const std::vector<SlideFigure>& figures, 
         fig << "<div class=\"failed figure-failed\">figure failed: " << escapeHtml(f.error) << "</div>";
       else
         fig << "<img id=\"" << figureId(s) << "\" alt=\"" << escapeHtml(f.caption) << "\" src=\"data:image/png;base64,"
-            << base64(f.png) << "\">";
+            << base64(f.png) << "\""
+            << (f.width > 0 && f.height > 0
+                    ? " width=\"" + std::to_string(f.width) + "\" height=\"" + std::to_string(f.height) + "\""
+                    : std::string())
+            << ">";
       if (!f.caption.empty()) fig << "<figcaption>" << escapeHtml(f.caption) << "</figcaption>";
       fig << "</figure>";
       figure = fig.str();

@@ -16,6 +16,7 @@ struct SlideFigure {
   std::string png;      // PNG file bytes; empty if the figure failed or the slide has none
   std::string caption;  // the preset's description
   std::string error;    // why it failed ("" = fine)
+  int width = 0, height = 0;  // CSS pixels it is shown at (0 = the PNG's own size); the PNG may be 2x
 };
 
 // `figures` has one entry per slide. `katexDir` holds katex.min.js,

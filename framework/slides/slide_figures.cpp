@@ -1,10 +1,20 @@
 #include "slides/slide_figures.h"
 
+#include <algorithm>
+#include <cmath>
 #include <exception>
 
 #include <stb/stb_image_write.h>
 
+#include "scene/scene_loader.h"
+
 namespace ll {
+
+namespace {
+
+constexpr int kResolutionScale = 2;  // render pixels per CSS pixel
+
+}  // namespace
 
 std::string pngBytes(const Image& image) {
   std::vector<uint8_t> bytes(image.pixelCount() * 3);
@@ -29,9 +39,22 @@ std::vector<SlideFigure> renderDeckFigures(const Deck& deck, const FigureLimits&
     SlideFigure& f = figures[i];
     f.caption = slide.preset->preset.description;
     try {
-      const PresetFigure figure = renderPresetFigure(slide.preset->preset, limits, [&](double fraction) {
+      // The size shown in the page: the preset's, else its scene camera's; rendered at twice that.
+      ViewPreset preset = slide.preset->preset;
+      int w = preset.width, h = preset.height;
+      if (w <= 0 || h <= 0) {
+        const Scene scene = loadScene(preset.scene);
+        w = scene.camera.width;
+        h = scene.camera.height;
+      }
+      preset.width = w * kResolutionScale;
+      preset.height = h * kResolutionScale;
+      const PresetFigure figure = renderPresetFigure(preset, limits, [&](double fraction) {
         if (onProgress) onProgress(done + fraction);
       });
+      const double css = static_cast<double>(w) / std::max(figure.paneWidth, 1);  // CSS pixels per PNG pixel
+      f.width = static_cast<int>(std::lround(figure.image.width() * css));
+      f.height = static_cast<int>(std::lround(figure.image.height() * css));
       f.png = pngBytes(figure.image);
       if (f.png.empty()) f.error = "PNG encoding failed";
       if (reports) (*reports)[i] = {figure.image.width(), figure.image.height(), figure.seconds, figure.missingTasks};

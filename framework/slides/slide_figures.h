@@ -1,6 +1,9 @@
 // The figures of a deck: each slide's preset rendered headless
-// (renderPresetFigure) and encoded as PNG. A figure that fails records why
-// and the others still render, so one build reports every failure.
+// (renderPresetFigure) and encoded as PNG. Figures render at twice the
+// preset's size (its width and height, else its scene camera's) and are shown
+// at the preset's size, sharp on high-density screens and projectors;
+// --max-width caps the doubled render. A figure that fails records why and
+// the others still render, so one build reports every failure.
 #pragma once
 
 #include <functional>
@@ -13,7 +16,7 @@
 namespace ll {
 
 struct FigureReport {
-  int width = 0, height = 0;  // of the PNG
+  int width = 0, height = 0;  // of the PNG (up to twice the figure's size in the page)
   double seconds = 0.0;
   std::map<std::string, std::string> missingTasks;
 };

@@ -17,19 +17,25 @@ struct Collector {
   std::vector<int> lists;       // per open list: next number, or -1 for bullets
   std::vector<SpanStyle> styles;  // open spans
   int paragraphLevel = 0;  // list depth of the paragraph a display equation interrupted
+  std::string math;        // the LaTeX of the open math span, converted when it closes
 
   TextBlock& open(BlockKind kind, int level = 0, std::string marker = "") {
     blocks.push_back({kind, level, std::move(marker), {}});
     return blocks.back();
   }
   SpanStyle style() const { return styles.empty() ? SpanStyle::Plain : styles.back(); }
-  void add(const std::string& text, SpanStyle s) {
+  void add(const std::string& text, SpanStyle s, int script = 0) {
+    if (text.empty()) return;
     if (blocks.empty()) open(BlockKind::Paragraph);
     auto& spans = blocks.back().spans;
-    if (!spans.empty() && spans.back().style == s)
+    if (!spans.empty() && spans.back().style == s && spans.back().script == script)
       spans.back().text += text;
     else
-      spans.push_back({text, s});
+      spans.push_back({text, s, script});
+  }
+  void closeMath() {
+    for (const MathRun& r : mathRuns(math)) add(r.text, SpanStyle::Math, r.script);
+    math.clear();
   }
 };
 
@@ -108,6 +114,7 @@ int enterSpan(MD_SPANTYPE type, void*, void* user) {
 int leaveSpan(MD_SPANTYPE type, void*, void* user) {
   auto& c = *static_cast<Collector*>(user);
   c.styles.pop_back();
+  if (type == MD_SPAN_LATEXMATH || type == MD_SPAN_LATEXMATH_DISPLAY) c.closeMath();
   if (type == MD_SPAN_LATEXMATH_DISPLAY) c.open(BlockKind::Paragraph, c.paragraphLevel);
   return 0;
 }
@@ -117,13 +124,16 @@ int text(MD_TEXTTYPE type, const MD_CHAR* data, MD_SIZE size, void* user) {
   const std::string s(data, size);
   switch (type) {
     case MD_TEXT_SOFTBR:
-      c.add(" ", c.style());
+      if (c.style() == SpanStyle::Math)
+        c.math += ' ';
+      else
+        c.add(" ", c.style());
       break;
     case MD_TEXT_BR:
       c.add("\n", c.style());
       break;
     case MD_TEXT_LATEXMATH:
-      c.add(mathAsText(s), SpanStyle::Math);
+      c.math += s;
       break;
     case MD_TEXT_HTML:
       if (s.find(kFigureMarker) != std::string::npos) c.open(BlockKind::Figure);
@@ -151,53 +161,132 @@ const std::map<std::string, std::string>& symbols() {
       {"approx", "≈"}, {"le", "≤"}, {"leq", "≤"}, {"ge", "≥"}, {"geq", "≥"}, {"neq", "≠"}, {"ne", "≠"},
       {"partial", "∂"}, {"nabla", "∇"}, {"cdot", "·"}, {"times", "×"}, {"pm", "±"}, {"propto", "∝"},
       {"sim", "∼"}, {"in", "∈"}, {"to", "→"}, {"rightarrow", "→"}, {"leftarrow", "←"}, {"Rightarrow", "⇒"},
-      {"mapsto", "↦"}, {"langle", "⟨"}, {"rangle", "⟩"}, {"lVert", "‖"}, {"rVert", "‖"}, {"|", "‖"},
-      {"ldots", "…"}, {"dots", "…"}, {"cdots", "⋯"}, {"forall", "∀"}, {"cup", "∪"}, {"cap", "∩"},
-      {"sqrt", "√"}, {"lfloor", "⌊"}, {"rfloor", "⌋"}, {"quad", "  "}, {"qquad", "    "}, {",", " "},
-      {";", " "}, {"!", ""}, {" ", " "}, {"left", ""}, {"right", ""}, {"big", ""}, {"Big", ""},
-      {"displaystyle", ""}, {"max", "max"}, {"min", "min"}, {"cos", "cos"}, {"sin", "sin"}, {"log", "log"},
-      {"ln", "ln"}, {"exp", "exp"}, {"arg", "arg"}, {"lim", "lim"}, {"{", "{"}, {"}", "}"}, {"_", "_"},
-      {"equiv", "≡"}, {"circ", "∘"}, {"star", "⋆"}, {"ell", "ℓ"}, {"perp", "⊥"}, {"hbar", "ħ"}};
+      {"iff", "⇔"}, {"mapsto", "↦"}, {"langle", "⟨"}, {"rangle", "⟩"}, {"lVert", "‖"}, {"rVert", "‖"},
+      {"Vert", "‖"}, {"|", "‖"}, {"vert", "|"}, {"lvert", "|"}, {"rvert", "|"}, {"ldots", "…"}, {"dots", "…"},
+      {"cdots", "⋯"}, {"forall", "∀"}, {"cup", "∪"}, {"cap", "∩"}, {"lfloor", "⌊"}, {"rfloor", "⌋"},
+      {"quad", "  "}, {"qquad", "    "}, {",", " "}, {";", " "}, {":", " "}, {"!", ""}, {" ", " "}, {"left", ""},
+      {"right", ""}, {"big", ""}, {"Big", ""}, {"bigg", ""}, {"Bigg", ""}, {"displaystyle", ""}, {"{", "{"},
+      {"}", "}"}, {"_", "_"}, {"%", "%"}, {"\\", "; "}, {"equiv", "≡"}, {"circ", "∘"}, {"star", "⋆"},
+      {"ell", "ℓ"}, {"perp", "⊥"}, {"hbar", "ħ"}};
   return table;
+}
+
+// Upright function names: a thin space separates them from a following letter (cos θ, but cos²θ, max(...)).
+bool isFunctionName(const std::string& name) {
+  static const char* names[] = {"max", "min", "cos", "sin", "tan", "log", "ln", "exp", "arg", "lim", "det", "sup", "inf"};
+  return std::any_of(std::begin(names), std::end(names), [&](const char* n) { return name == n; });
 }
 
 // Wrappers whose argument is shown as is.
 bool isTextWrapper(const std::string& name) {
   return name == "mathbf" || name == "mathrm" || name == "text" || name == "mathit" || name == "mathcal" ||
-         name == "boldsymbol" || name == "operatorname" || name == "textrm" || name == "mathsf" || name == "bm";
+         name == "boldsymbol" || name == "textrm" || name == "mathsf" || name == "bm" || name == "mathrel" ||
+         name == "mathbin" || name == "mathop" || name == "textbf" || name == "textit" || name == "mathbb";
 }
 
-// Characters in UTF-8 text (bytes that do not continue a sequence).
-size_t codePoints(const std::string& s) {
-  return static_cast<size_t>(std::count_if(s.begin(), s.end(), [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; }));
-}
-
-std::string superscript(const std::string& s) {
-  static const std::map<char, std::string> sup = {{'0', "⁰"}, {'1', "¹"}, {'2', "²"}, {'3', "³"}, {'4', "⁴"},
-                                                  {'5', "⁵"}, {'6', "⁶"}, {'7', "⁷"}, {'8', "⁸"}, {'9', "⁹"},
-                                                  {'+', "⁺"}, {'-', "⁻"}, {'n', "ⁿ"}, {'i', "ⁱ"}};
-  std::string out;
-  for (const char ch : s) {
-    const auto it = sup.find(ch);
-    if (it == sup.end()) return codePoints(s) > 1 ? "^(" + s + ")" : "^" + s;
-    out += it->second;
+// The UTF-8 code points of `s`, each as a string.
+std::vector<std::string> splitCodePoints(const std::string& s) {
+  std::vector<std::string> out;
+  for (const char c : s) {
+    if ((static_cast<unsigned char>(c) & 0xC0) == 0x80 && !out.empty())
+      out.back() += c;
+    else
+      out.emplace_back(1, c);
   }
   return out;
 }
 
-// Unicode subscripts exist for digits and a few letters only; others keep the underscore.
-std::string subscript(const std::string& s) {
-  static const std::map<char, std::string> sub = {
-      {'0', "₀"}, {'1', "₁"}, {'2', "₂"}, {'3', "₃"}, {'4', "₄"}, {'5', "₅"}, {'6', "₆"}, {'7', "₇"},
-      {'8', "₈"}, {'9', "₉"}, {'+', "₊"}, {'-', "₋"}, {'a', "ₐ"}, {'e', "ₑ"}, {'o', "ₒ"}, {'x', "ₓ"},
-      {'h', "ₕ"}, {'k', "ₖ"}, {'l', "ₗ"}, {'m', "ₘ"}, {'n', "ₙ"}, {'p', "ₚ"}, {'s', "ₛ"}, {'t', "ₜ"},
-      {'i', "ᵢ"}, {'j', "ⱼ"}, {'r', "ᵣ"}, {'u', "ᵤ"}, {'v', "ᵥ"}};
+using Runs = std::vector<MathRun>;
+
+void append(Runs& out, const std::string& text, int script = 0) {
+  if (text.empty()) return;
+  if (!out.empty() && out.back().script == script)
+    out.back().text += text;
+  else
+    out.push_back({text, script});
+}
+
+void append(Runs& out, const Runs& more) {
+  for (const MathRun& r : more) append(out, r.text, r.script);
+}
+
+std::string joined(const Runs& runs) {
   std::string out;
-  for (const char ch : s) {
-    const auto it = sub.find(ch);
-    if (it == sub.end()) return "_" + (codePoints(s) > 1 ? "(" + s + ")" : s);
-    out += it->second;
+  for (const MathRun& r : runs) {
+    if (r.script == 0) {
+      out += r.text;
+      continue;
+    }
+    const bool spaced = r.text.find(' ') != std::string::npos;
+    out += (r.script < 0 ? "_" : "^") + (spaced ? "(" + r.text + ")" : r.text);
   }
+  return out;
+}
+
+// Unicode sub- and superscript forms (the ones DejaVu Sans draws); others are drawn as small runs.
+const std::map<std::string, std::string>& subscripts() {
+  static const std::map<std::string, std::string> sub = {
+      {"0", "₀"}, {"1", "₁"}, {"2", "₂"}, {"3", "₃"}, {"4", "₄"}, {"5", "₅"}, {"6", "₆"}, {"7", "₇"}, {"8", "₈"},
+      {"9", "₉"}, {"+", "₊"}, {"−", "₋"}, {"=", "₌"}, {"(", "₍"}, {")", "₎"}, {"a", "ₐ"}, {"e", "ₑ"}, {"o", "ₒ"},
+      {"x", "ₓ"}, {"h", "ₕ"}, {"k", "ₖ"}, {"l", "ₗ"}, {"m", "ₘ"}, {"n", "ₙ"}, {"p", "ₚ"}, {"s", "ₛ"}, {"t", "ₜ"},
+      {"i", "ᵢ"}, {"j", "ⱼ"}, {"r", "ᵣ"}, {"u", "ᵤ"}, {"v", "ᵥ"}};
+  return sub;
+}
+const std::map<std::string, std::string>& superscripts() {
+  static const std::map<std::string, std::string> sup = {
+      {"0", "⁰"}, {"1", "¹"}, {"2", "²"}, {"3", "³"}, {"4", "⁴"}, {"5", "⁵"}, {"6", "⁶"}, {"7", "⁷"}, {"8", "⁸"},
+      {"9", "⁹"}, {"+", "⁺"}, {"−", "⁻"}, {"=", "⁼"}, {"(", "⁽"}, {")", "⁾"}, {"n", "ⁿ"}, {"i", "ⁱ"}};
+  return sup;
+}
+
+// A script argument in Unicode sub/superscript characters when every character has one, else a small run.
+Runs script(const Runs& arg, int level) {
+  const auto& table = level < 0 ? subscripts() : superscripts();
+  bool plain = std::all_of(arg.begin(), arg.end(), [](const MathRun& r) { return r.script == 0; });
+  std::string mapped;
+  if (plain)
+    for (const std::string& cp : splitCodePoints(joined(arg))) {
+      const auto it = table.find(cp);
+      if (it == table.end()) {
+        plain = false;
+        break;
+      }
+      mapped += it->second;
+    }
+  Runs out;
+  if (plain && !mapped.empty()) {
+    append(out, mapped);
+    return out;
+  }
+  for (const MathRun& r : arg) append(out, r.text, level);
+  return out;
+}
+
+// Whether a fraction's or root's part needs parentheses to read right on one line.
+bool needsGroup(const Runs& runs) {
+  const std::string text = joined(runs);
+  auto cps = splitCodePoints(text);
+  if (cps.size() <= 1) return false;
+  if (cps.front() == "√") cps.erase(cps.begin());  // √(...) is grouped already
+  static const std::vector<std::pair<std::string, std::string>> delimiters = {
+      {"(", ")"}, {"‖", "‖"}, {"|", "|"}, {"⟨", "⟩"}, {"[", "]"}, {"⌊", "⌋"}};
+  for (const auto& [open, close] : delimiters)
+    if (cps.front() == open && cps.back() == close &&
+        std::count(cps.begin() + 1, cps.end() - 1, open) == 0 && std::count(cps.begin() + 1, cps.end() - 1, close) == 0)
+      return false;
+  if (std::isdigit(static_cast<unsigned char>(text[0])) && cps.size() > 1 && !std::all_of(text.begin(), text.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)) || c == '.'; }))
+    return true;  // 2π: a product
+  for (const char* op : {" ", "+", "−", "-", "·", "×", "/", "=", ",", "<", ">", "≤", "≥"})
+    if (text.find(op) != std::string::npos) return true;
+  return false;
+}
+
+Runs grouped(const Runs& runs) {
+  if (!needsGroup(runs)) return runs;
+  Runs out;
+  append(out, "(");
+  append(out, runs);
+  append(out, ")");
   return out;
 }
 
@@ -205,72 +294,218 @@ struct MathReader {
   const std::string& s;
   size_t i = 0;
 
-  // One argument: {...} or a single character / command.
-  std::string argument() {
+  void skipSpaces() {
     while (i < s.size() && s[i] == ' ') ++i;
-    if (i >= s.size()) return "";
-    if (s[i] == '{') {
-      int depth = 0;
-      const size_t start = ++i;
-      for (; i < s.size(); ++i) {
-        if (s[i] == '{') ++depth;
-        if (s[i] == '}' && depth-- == 0) break;
-      }
-      const std::string inner = s.substr(start, i - start);
-      if (i < s.size()) ++i;
-      return mathAsText(inner);
-    }
-    if (s[i] == '\\') return command();
-    return std::string(1, s[i++]);
   }
 
-  std::string command() {  // at the backslash
+  // The text of a {...} group (i at the brace), braces removed.
+  std::string group() {
+    int depth = 0;
+    const size_t start = ++i;
+    for (; i < s.size(); ++i) {
+      if (s[i] == '\\' && i + 1 < s.size()) {
+        ++i;
+        continue;
+      }
+      if (s[i] == '{') ++depth;
+      if (s[i] == '}' && depth-- == 0) break;
+    }
+    const std::string inner = s.substr(start, i - start);
+    if (i < s.size()) ++i;
+    return inner;
+  }
+
+  // One argument: {...} or a single character / command.
+  Runs argument() {
+    skipSpaces();
+    if (i >= s.size()) return {};
+    if (s[i] == '{') return mathRuns(group());
+    if (s[i] == '\\') return command();
+    Runs out;
+    append(out, character());
+    return out;
+  }
+
+  std::string character() {  // one code point at i
+    const char ch = s[i++];
+    if (ch == '-') return "−";
+    if (ch == '~') return " ";
+    if (ch == '&') return "  ";
+    std::string cp(1, ch);
+    while (i < s.size() && (static_cast<unsigned char>(s[i]) & 0xC0) == 0x80) cp += s[i++];
+    return cp;
+  }
+
+  Runs command() {  // at the backslash
     ++i;
-    size_t start = i;
+    const size_t start = i;
     while (i < s.size() && std::isalpha(static_cast<unsigned char>(s[i]))) ++i;
     if (i == start && i < s.size()) ++i;  // \, \| \{ ...
     const std::string name = s.substr(start, i - start);
+    Runs out;
     if (name == "frac" || name == "dfrac" || name == "tfrac") {
-      const std::string a = argument(), b = argument();
-      const auto wrap = [](const std::string& x) { return x.size() > 1 ? "(" + x + ")" : x; };
-      return wrap(a) + "/" + wrap(b);
+      const Runs a = argument(), b = argument();
+      append(out, grouped(a));
+      append(out, "/");
+      append(out, grouped(b));
+    } else if (name == "sqrt") {
+      skipSpaces();
+      if (i < s.size() && s[i] == '[') i = std::min(s.size(), s.find(']', i) + 1);  // \sqrt[n]: shown as √
+      const Runs a = argument();
+      append(out, "√");
+      if (codePoints(joined(a)) > 1) {  // the root's argument grouped: √(1 − x), never √1 − x
+        append(out, "(");
+        append(out, a);
+        append(out, ")");
+      } else {
+        append(out, a);
+      }
+    } else if (isTextWrapper(name)) {
+      out = argument();
+    } else if (name == "operatorname") {
+      out = argument();
+      functionSpace(out);
+    } else if (name == "hat" || name == "vec" || name == "bar" || name == "tilde" || name == "dot") {
+      const char* mark = name == "hat" ? "\xCC\x82" : name == "vec" ? "\xE2\x83\x97" : name == "bar" ? "\xCC\x84"
+                         : name == "dot" ? "\xCC\x87" : "\xCC\x83";
+      out = argument();
+      if (!out.empty()) out.back().text += mark;
+    } else if (name == "begin" || name == "end") {
+      skipSpaces();
+      const std::string env = i < s.size() && s[i] == '{' ? group() : "";
+      if (name == "begin" && env == "cases") append(out, "{ ");
+    } else if (isFunctionName(name)) {
+      append(out, name);
+      functionSpace(out);
+    } else {
+      const auto it = symbols().find(name);
+      append(out, it != symbols().end() ? it->second : name);
     }
-    if (isTextWrapper(name)) return argument();
-    if (name == "hat" || name == "vec" || name == "bar" || name == "tilde") {
-      const char* mark = name == "hat" ? "\xCC\x82" : name == "vec" ? "\xE2\x83\x97" : name == "bar" ? "\xCC\x84" : "\xCC\x83";
-      return argument() + mark;
-    }
-    const auto it = symbols().find(name);
-    return it != symbols().end() ? it->second : name;
+    return out;
+  }
+
+  // After an upright function name: a thin space if a letter or a command (not a script, not a bracket) follows.
+  void functionSpace(Runs& out) {
+    size_t j = i;
+    while (j < s.size() && s[j] == ' ') ++j;
+    if (j < s.size() && (std::isalpha(static_cast<unsigned char>(s[j])) || (s[j] == '\\' && j + 1 < s.size() && std::isalpha(static_cast<unsigned char>(s[j + 1])))))
+      append(out, "\xE2\x80\x89");  // U+2009 thin space
   }
 };
 
 }  // namespace
 
-std::string mathAsText(const std::string& latex) {
+size_t codePoints(const std::string& s) {
+  return static_cast<size_t>(std::count_if(s.begin(), s.end(), [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; }));
+}
+
+std::vector<MathRun> mathRuns(const std::string& latex) {
   MathReader r{latex};
-  std::string out;
+  Runs out;
   while (r.i < latex.size()) {
     const char ch = latex[r.i];
     if (ch == '\\') {
-      out += r.command();
-    } else if (ch == '^') {
+      append(out, r.command());
+    } else if (ch == '^' || ch == '_') {
       ++r.i;
-      out += superscript(r.argument());
-    } else if (ch == '_') {
+      append(out, script(r.argument(), ch == '^' ? 1 : -1));
+    } else if (ch == '{') {
+      append(out, mathRuns(r.group()));
+    } else if (ch == '}') {
       ++r.i;
-      out += subscript(r.argument());
-    } else if (ch == '{' || ch == '}') {
-      ++r.i;
-    } else if (ch == '\n') {
-      out += ' ';
+    } else if (ch == '\n' || ch == '\t') {
+      append(out, " ");
       ++r.i;
     } else {
-      out += ch;
-      ++r.i;
+      append(out, r.character());
     }
   }
   return out;
+}
+
+std::string mathAsText(const std::string& latex) { return joined(mathRuns(latex)); }
+
+std::vector<LaidLine> wrapSpans(const std::vector<TextSpan>& spans, float width, const MeasureText& measure,
+                                float minScale) {
+  // Units that never break inside, each with the spaces after it and whether a line break follows.
+  struct Unit {
+    std::vector<LaidPiece> pieces;
+    std::vector<LaidPiece> trail;  // spaces: dropped at the end of a line
+    bool breakAfter = false;
+  };
+  std::vector<Unit> units(1);
+  const auto put = [](std::vector<LaidPiece>& pieces, size_t span, const std::string& text) {
+    if (text.empty()) return;
+    if (!pieces.empty() && pieces.back().span == span)
+      pieces.back().text += text;
+    else
+      pieces.push_back({span, text, 0.0f, 0.0f});
+  };
+  for (size_t k = 0; k < spans.size(); ++k) {
+    const std::string& t = spans[k].text;
+    if (spans[k].style == SpanStyle::Math) {  // the whole formula, spaces and all, glued to its neighbours
+      if (!units.back().trail.empty()) units.emplace_back();
+      put(units.back().pieces, k, t);
+      continue;
+    }
+    size_t i = 0;
+    while (i < t.size()) {
+      if (t[i] == '\n') {
+        units.back().breakAfter = true;
+        units.emplace_back();
+        ++i;
+      } else if (t[i] == ' ') {
+        const size_t end = std::min(t.find_first_not_of(' ', i), t.size());
+        put(units.back().trail, k, t.substr(i, end - i));
+        i = end;
+      } else {
+        if (!units.back().trail.empty()) units.emplace_back();
+        const size_t end = std::min(t.find_first_of(" \n", i), t.size());
+        put(units.back().pieces, k, t.substr(i, end - i));
+        i = end;
+      }
+    }
+  }
+
+  std::vector<LaidLine> lines(1);
+  float x = 0.0f;  // pen position on the current line, trailing spaces included
+  const auto newLine = [&] {
+    lines.emplace_back();
+    x = 0.0f;
+  };
+  for (Unit& u : units) {
+    float w = 0.0f, trailW = 0.0f;
+    for (LaidPiece& p : u.pieces) w += (p.width = measure(p.text, spans[p.span]));
+    for (LaidPiece& p : u.trail) trailW += (p.width = measure(p.text, spans[p.span]));
+    if (!u.pieces.empty()) {
+      if (x > 0.0f && x + w > width) newLine();
+      if (w > width && width > 0.0f) {  // alone on its line, shrunk (and maybe still too wide)
+        if (!lines.back().pieces.empty()) newLine();
+        LaidLine& line = lines.back();
+        line.scale = std::max(minScale, width / w);
+        for (LaidPiece p : u.pieces) {
+          p.x = x * line.scale;
+          p.width *= line.scale;
+          x += p.width / line.scale;
+          line.pieces.push_back(p);
+        }
+        line.width = w * line.scale;
+        newLine();
+        continue;
+      }
+      LaidLine& line = lines.back();
+      for (LaidPiece p : u.pieces) {
+        p.x = x;
+        x += p.width;
+        line.pieces.push_back(p);
+      }
+      line.width = x;
+    }
+    if (!lines.back().pieces.empty()) x += trailW;  // no spaces at the start of a line
+    if (u.breakAfter) newLine();
+  }
+  if (lines.size() > 1 && lines.back().pieces.empty()) lines.pop_back();
+  return lines;
 }
 
 std::vector<TextBlock> slideText(const std::string& markdown) {

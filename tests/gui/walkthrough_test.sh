@@ -21,29 +21,6 @@ trap 'kill $gui 2>/dev/null || true' EXIT
 xdotool search --sync --name LightLab >/dev/null
 
 source "$HERE/xdotool_helpers.sh"
-# reveal NAME WIDGET [BOX]: screenshots until WIDGET lies wholly inside BOX (a
-# recorded window: the side panel, or an open combo's list), turning the mouse
-# wheel over BOX to scroll it there, as a user would.
-reveal() {
-  local where
-  for _ in $(seq 40); do
-    shot "$1"
-    where=$(q "$1.json" "(lambda r, b: 'missing' if r is None else 'up' if r[1] < b[1] else 'down' if r[1] + r[3] > b[1] + b[3] else 'ok')(j['widgets'].get('$2'), j['widgets']['${3:-panel}'])")
-    case $where in
-      ok) return 0 ;;
-      up) xdotool mousemove $(centre "$1" "${3:-panel}") click 4 ;;
-      down) xdotool mousemove $(centre "$1" "${3:-panel}") click 5 ;;
-      *) fail "$1: the GUI drew no widget '$2'" ;;
-    esac
-    sleep 0.2
-  done
-  fail "$1: could not scroll '$2' into view"
-}
-centre() { q "$1.json" "' '.join(str(int(v)) for v in (j['widgets']['$2'][0] + j['widgets']['$2'][2] * ${3:-0.5}, j['widgets']['$2'][1] + j['widgets']['$2'][3] / 2))"; }
-click() {  # click NAME WIDGET [FRACTION-ACROSS] [BOX]: reveal the widget, then click it
-  reveal "$1" "$2" "${4:-panel}"
-  xdotool mousemove $(centre "$1" "$2" "${3:-0.5}") sleep 0.2 click 1
-}
 drag() {  # drag X0 Y0 X1 Y1 in small steps, as a hand would
   xdotool mousemove "$1" "$2" sleep 0.1 mousedown 1 sleep 0.1
   for i in 1 2 3 4 5; do

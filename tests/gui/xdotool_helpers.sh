@@ -5,6 +5,8 @@
 #   shot NAME               F12 (again after 30 s), wait for the PNG and its sidecar, keep them as NAME.*
 #   until_shot NAME COND [S]  screenshots until COND holds on the sidecar (S seconds, 120)
 #   key KEYSYM              one key press, the mouse parked in the corner
+#   reveal NAME WIDGET [BOX]  scroll the side panel (or BOX) until WIDGET is wholly in view
+#   click NAME WIDGET [FRACTION-ACROSS] [BOX]  reveal, then click the widget
 #   $done_both              both panes finished all passes, and the pixels on screen are
 #                           their last image (display bytes are encoded in the background,
 #                           so the sidecar's phase can run ahead of the texture)
@@ -35,3 +37,26 @@ until_shot() {
 }
 key() { xdotool mousemove 5 5 key "$1"; }
 done_both="all(p['phase'] == 'done' and p['passes'] == p['total_passes'] and p['on_screen_version'] == p['image_version'] for p in j['panes'][:2])"
+# reveal NAME WIDGET [BOX]: screenshots until WIDGET lies wholly inside BOX (a
+# recorded window: the side panel, or an open combo's list), turning the mouse
+# wheel over BOX to scroll it there, as a user would.
+reveal() {
+  local where
+  for _ in $(seq 40); do
+    shot "$1"
+    where=$(q "$1.json" "(lambda r, b: 'missing' if r is None else 'up' if r[1] < b[1] else 'down' if r[1] + r[3] > b[1] + b[3] else 'ok')(j['widgets'].get('$2'), j['widgets']['${3:-panel}'])")
+    case $where in
+      ok) return 0 ;;
+      up) xdotool mousemove $(centre "$1" "${3:-panel}") click 4 ;;
+      down) xdotool mousemove $(centre "$1" "${3:-panel}") click 5 ;;
+      *) fail "$1: the GUI drew no widget '$2'" ;;
+    esac
+    sleep 0.2
+  done
+  fail "$1: could not scroll '$2' into view"
+}
+centre() { q "$1.json" "' '.join(str(int(v)) for v in (j['widgets']['$2'][0] + j['widgets']['$2'][2] * ${3:-0.5}, j['widgets']['$2'][1] + j['widgets']['$2'][3] / 2))"; }
+click() {  # click NAME WIDGET [FRACTION-ACROSS] [BOX]: reveal the widget, then click it
+  reveal "$1" "$2" "${4:-panel}"
+  xdotool mousemove $(centre "$1" "$2" "${3:-0.5}") sleep 0.2 click 1
+}

@@ -1,0 +1,98 @@
+#include "gui/pane_labels.h"
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include "gui/app_actions.h"
+#include "gui/viewport.h"
+
+namespace ll::gui {
+
+std::string shortParamName(const std::string& name) {
+  static const std::map<std::string, std::string> kShort{
+      {"max_depth", "depth"}, {"light_samples", "light samples"}, {"rr_depth", "roulette from"}};
+  if (const auto it = kShort.find(name); it != kShort.end()) return it->second;
+  std::string s = name;
+  std::replace(s.begin(), s.end(), '_', ' ');
+  return s;
+}
+
+namespace {
+
+struct Item {
+  std::string key;   // what is compared across panes ("technique", "t:max_depth", ...)
+  std::string text;  // how this pane shows it
+};
+
+std::vector<Item> itemsOf(const PaneState& p) {
+  std::vector<Item> items{{"technique", p.technique}, {"accelerator", p.accelerator}};
+  if (p.view != PaneView::Image) items.push_back({"view", p.view == PaneView::NodesVisited ? "nodes visited" : "primitives tested"});
+  items.push_back({"spp", std::to_string(p.spp) + " spp"});
+  const auto params = [&](const ParamSet& set, const std::string& prefix) {
+    for (const ParamDecl& d : set.decls()) {
+      const std::string& v = set.text(d.name);
+      std::string text = shortParamName(d.name) + " " + v;
+      if (d.type == ParamDecl::Type::Bool) text = (v == "true" ? "" : "no ") + shortParamName(d.name);
+      items.push_back({prefix + d.name, text});
+    }
+  };
+  params(p.techniqueParams, "t:" + p.technique + ":");
+  params(p.accelParams, "a:" + p.accelerator + ":");
+  return items;
+}
+
+}  // namespace
+
+namespace {
+
+// Per visible pane, the items that tell it apart from the others.
+std::vector<std::vector<Item>> differingItems(const AppState& app) {
+  const int n = std::clamp(app.paneCount, 1, kMaxPanes);
+  std::vector<std::vector<Item>> items;
+  for (int i = 0; i < n; ++i) items.push_back(itemsOf(app.panes[static_cast<size_t>(i)]));
+  // Keys whose values differ between the panes that have them; a technique's (or
+  // accelerator's) parameter compares only among the panes that run it.
+  std::map<std::string, std::set<std::string>> values;
+  std::map<std::string, int> holders;
+  for (const auto& list : items)
+    for (const Item& it : list) {
+      values[it.key].insert(it.text);
+      ++holders[it.key];
+    }
+  std::vector<std::vector<Item>> out(items.size());
+  for (size_t i = 0; i < items.size(); ++i)
+    for (const Item& it : items[i]) {
+      const bool param = it.key.rfind("t:", 0) == 0 || it.key.rfind("a:", 0) == 0;
+      if (values[it.key].size() > 1 && !(param && holders[it.key] < 2) && !it.text.empty()) out[i].push_back(it);
+    }
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::string> distinguishingLabels(const AppState& app) {
+  const auto items = differingItems(app);
+  std::vector<std::string> labels;
+  for (size_t i = 0; i < items.size(); ++i) {
+    std::string line(1, paneLetter(static_cast<int>(i)));
+    for (const Item& it : items[i]) line += "  " + it.text;
+    if (items[i].empty()) line += "  " + app.panes[i].technique;
+    labels.push_back(line);
+  }
+  return labels;
+}
+
+std::vector<std::string> parameterDifferences(const AppState& app) {
+  const auto items = differingItems(app);
+  std::vector<std::string> out;
+  for (const auto& list : items) {
+    std::string line;
+    for (const Item& it : list)
+      if (it.key != "technique" && it.key != "accelerator") line += (line.empty() ? "" : "  ") + it.text;
+    out.push_back(line);
+  }
+  return out;
+}
+
+}  // namespace ll::gui

@@ -1,0 +1,74 @@
+// Projector labels name what differs between the panes, and only that.
+#include "gui/pane_labels.h"
+
+#include <gtest/gtest.h>
+
+#include "gui/app_actions.h"
+#include "modules/registry.h"
+
+namespace ll::gui {
+namespace {
+
+void use(AppState& app, int pane, const std::string& technique, const std::string& accelerator = "bvh") {
+  setTechnique(app, pane, technique);
+  setAccelerator(app, pane, accelerator);
+}
+
+TEST(PaneLabels, RecursionDepthSlideNamesEachPanesDepth) {
+  AppState app;
+  initPanes(app);
+  app.paneCount = 4;
+  const char* depths[] = {"0", "1", "2", "5"};
+  for (int i = 0; i < 4; ++i) {
+    use(app, i, "whitted");
+    app.panes[static_cast<size_t>(i)].spp = 4;
+    app.panes[static_cast<size_t>(i)].techniqueParams.set("max_depth", depths[i]);
+  }
+  EXPECT_EQ(distinguishingLabels(app),
+            (std::vector<std::string>{"A  depth 0", "B  depth 1", "C  depth 2", "D  depth 5"}));
+  EXPECT_EQ(parameterDifferences(app), (std::vector<std::string>{"depth 0", "depth 1", "depth 2", "depth 5"}));
+}
+
+TEST(PaneLabels, TechniquesAndSampleCountsThatDifferAreNamed) {
+  AppState app;
+  initPanes(app);
+  app.paneCount = 2;
+  use(app, 0, "raycast");
+  use(app, 1, "path");
+  app.panes[0].spp = 4;
+  app.panes[1].spp = 64;
+  EXPECT_EQ(distinguishingLabels(app), (std::vector<std::string>{"A  raycast  4 spp", "B  path  64 spp"}));
+  // The panes' own parameters say nothing here: neither technique runs in the other pane.
+  EXPECT_EQ(parameterDifferences(app), (std::vector<std::string>{"4 spp", "64 spp"}));
+}
+
+TEST(PaneLabels, AcceleratorsAreNamedWhenOnlyTheyDiffer) {
+  AppState app;
+  initPanes(app);
+  app.paneCount = 2;
+  use(app, 0, "path", "bvh");
+  use(app, 1, "path", "kdtree");
+  app.panes[0].spp = app.panes[1].spp = 16;
+  EXPECT_EQ(distinguishingLabels(app), (std::vector<std::string>{"A  bvh", "B  kdtree"}));
+}
+
+TEST(PaneLabels, OnePaneOrAlikePanesShowTheTechnique) {
+  AppState app;
+  initPanes(app);
+  app.paneCount = 1;
+  use(app, 0, "whitted");
+  EXPECT_EQ(distinguishingLabels(app), (std::vector<std::string>{"A  whitted"}));
+  app.paneCount = 2;
+  use(app, 1, "whitted");
+  app.panes[1].spp = app.panes[0].spp;
+  app.panes[1].techniqueParams = app.panes[0].techniqueParams;
+  EXPECT_EQ(distinguishingLabels(app), (std::vector<std::string>{"A  whitted", "B  whitted"}));
+}
+
+TEST(PaneLabels, ShortParameterNames) {
+  EXPECT_EQ(shortParamName("max_depth"), "depth");
+  EXPECT_EQ(shortParamName("patch_size"), "patch size");
+}
+
+}  // namespace
+}  // namespace ll::gui
