@@ -17,7 +17,7 @@ packages=(
   build-essential cmake ninja-build ccache pkg-config git patch python3 python3-jsonschema
   libglfw3-dev libimgui-dev libglm-dev libstb-dev libopenmesh-dev libtinyobjloader-dev libeigen3-dev
   nlohmann-json3-dev libcli11-dev libtbb-dev libgtest-dev libbenchmark-dev libembree-dev
-  libmd4c-dev libmd4c-html0-dev libjs-katex
+  libmd4c-dev libmd4c-html0-dev libjs-katex chromium  # chromium: the slides' browser test
   unifdef xvfb xauth xdotool libgl1-mesa-dri fonts-dejavu-core
   clang-14 libclang-rt-14-dev llvm-14  # the sanitizer build and libFuzzer (runtimes; llvm-symbolizer for reports)
 )

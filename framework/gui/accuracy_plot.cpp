@@ -156,7 +156,8 @@ void drawAccuracyPlot(ImDrawList* dl, const AccuracyPlot& plot, float x, float y
     const float gx = px(d);
     dl->AddLine(ImVec2(gx, top), ImVec2(gx, bottom), grid);
     const std::string t = secondsTick(d);
-    dl->AddText(ImVec2(gx - ImGui::CalcTextSize(t.c_str()).x / 2, bottom + 2 * s), text, t.c_str());
+    const float tw = ImGui::CalcTextSize(t.c_str()).x;  // centred under its line, kept inside the plot
+    dl->AddText(ImVec2(std::clamp(gx - tw / 2, x + 2 * s, x + w - tw - 2 * s), bottom + 2 * s), text, t.c_str());
   }
   for (int d = static_cast<int>(plot.y0); d <= static_cast<int>(plot.y1); ++d) {
     const float gy = py(d);
@@ -165,8 +166,10 @@ void drawAccuracyPlot(ImDrawList* dl, const AccuracyPlot& plot, float x, float y
     dl->AddText(ImVec2(left - ImGui::CalcTextSize(t.c_str()).x - 6 * s, gy - line / 2), text, t.c_str());
   }
   dl->AddRect(ImVec2(left, top), ImVec2(right, bottom), IM_COL32(160, 160, 170, 255));
-  const char* axis = "wall time (log)  -  relMSE (log)";
-  dl->AddText(ImVec2((left + right - ImGui::CalcTextSize(axis).x) / 2, bottom + line + 4 * s), text, axis);
+  const char* axis = "across: wall time, up: relMSE (both log)";
+  dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(),
+              ImVec2(std::max((left + right - ImGui::CalcTextSize(axis).x) / 2, x + 4 * s), bottom + line + 4 * s), text,
+              axis, nullptr, w - 8 * s);
   float legendY = top + 4 * s;
   for (const PlotSeries& series : plot.series) {
     const ImU32 c = IM_COL32(series.color[0], series.color[1], series.color[2], 255);

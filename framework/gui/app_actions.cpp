@@ -307,8 +307,10 @@ RenderSettings renderSettings(const AppState& app, const PaneState& pane) {
 
 void submitPanes(AppState& app) {
   if (!app.scene) return;
-  const bool all = app.cameraChanged;
+  // Turning the plot on restarts the panes, so that their curves start at their first pass.
+  const bool all = app.cameraChanged || (app.showPlot && !app.submittedPlot);
   app.cameraChanged = false;
+  app.submittedPlot = app.showPlot;
   for (int i = 0; i < kMaxPanes; ++i) {
     PaneState& pane = app.panes[static_cast<size_t>(i)];
     if (!paneActive(app, i)) {
@@ -333,6 +335,7 @@ void submitPanes(AppState& app) {
     r.accelParams = pane.accelParams;
     r.settings = renderSettings(app, pane);
     r.view = pane.view;
+    r.keepHistory = app.showPlot;
     pane.renderer->submit(std::move(r));
   }
 }
@@ -365,16 +368,20 @@ void refreshPanes(AppState& app) {
   const int ref = app.compare.reference;
   for (int i = 0; i < kMaxPanes; ++i) {
     PaneState& pane = app.panes[static_cast<size_t>(i)];
+    if (auto h = pane.historyMail->take()) pane.errorHistory = std::move(*h);
     if (auto e = pane.errorMail->take()) {
       pane.error = e->error;
       pane.hasError = true;
-      if (e->request != pane.errorHistoryRequest) pane.errorHistory.clear();
-      pane.errorHistoryRequest = e->request;
-      // One point per pass of this pane; a newer reference only refreshes the last point.
-      if (!pane.errorHistory.empty() && e->seconds <= pane.errorHistory.back().first)
-        pane.errorHistory.back().second = e->error.relmse;
-      else
-        pane.errorHistory.emplace_back(e->seconds, e->error.relmse);
+      // Without a kept history (no plot), a point per error measured; a newer reference only
+      // refreshes the last point. With one, the curve comes from the history (below).
+      if (pane.shown.history.empty()) {
+        if (e->request != pane.errorHistoryRequest) pane.errorHistory.clear();
+        pane.errorHistoryRequest = e->request;
+        if (!pane.errorHistory.empty() && e->seconds <= pane.errorHistory.back().first)
+          pane.errorHistory.back().second = e->error.relmse;
+        else
+          pane.errorHistory.emplace_back(e->seconds, e->error.relmse);
+      }
     }
     const PaneSnapshot* refShot = ref >= 0 && ref < kMaxPanes && i != ref
                                       ? &app.panes[static_cast<size_t>(ref)].shown
@@ -388,6 +395,19 @@ void refreshPanes(AppState& app) {
       pane.hasError = false;
       pane.errorVersions[0] = pane.errorVersions[1] = 0;
       continue;
+    }
+    // The plot's curve: every kept pass against the reference as it stands now (a newer
+    // reference re-measures the whole curve).
+    if (!pane.shown.history.empty() &&
+        (pane.historyVersions[0] != pane.shown.version || pane.historyVersions[1] != refShot->version)) {
+      pane.historyVersions[0] = pane.shown.version;
+      pane.historyVersions[1] = refShot->version;
+      bg.post("history " + std::to_string(i), [h = pane.shown.history, b = refShot->image, mail = pane.historyMail] {
+        std::vector<std::pair<double, double>> curve;
+        for (const auto& [t, image] : h)
+          if (image->width() == b->width() && image->height() == b->height()) curve.emplace_back(t, relativeMse(*image, *b));
+        mail->put(std::move(curve));
+      });
     }
     if (pane.errorVersions[0] == pane.shown.version && pane.errorVersions[1] == refShot->version)
       continue;

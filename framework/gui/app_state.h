@@ -60,6 +60,11 @@ struct PaneState {
   // Error against the reference over the current request's passes: (wall seconds, relMSE), for the live plot.
   std::vector<std::pair<double, double>> errorHistory;
   uint64_t errorHistoryRequest = 0;
+  // With the plot shown: the whole curve, recomputed from the renderer's history
+  // (PaneSnapshot::history) whenever it or the reference grows.
+  std::shared_ptr<Mailbox<std::vector<std::pair<double, double>>>> historyMail =
+      std::make_shared<Mailbox<std::vector<std::pair<double, double>>>>();
+  uint64_t historyVersions[2] = {0, 0};
   uint64_t errorVersions[2] = {0, 0};
   // The structure overlay: nodes of the pane's accelerator at the chosen depth (cached).
   std::shared_ptr<const Accelerator> overlayAccel;
@@ -159,6 +164,7 @@ struct AppState {
   bool showStats = false;    // I: in projector mode, each pane's full caption (passes, time, error)
   bool panelHidden = false;  // H: no side panel (or slide text); the panes take the window
   bool showPlot = false;     // the cost-of-accuracy plot beside the panes
+  bool submittedPlot = false;  // showPlot as of the last submit (turning it on restarts the panes)
   std::string plotPngRequest;                  // non-empty: save the plot's pixels there after the next frame
   std::array<float, 4> plotRect{};             // where the plot was drawn last frame (w = 0: hidden)
   std::vector<std::string> paneLabels;         // the projector labels drawn last frame, per visible pane

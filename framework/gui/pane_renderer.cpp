@@ -165,6 +165,7 @@ void PaneRenderer::render(const RenderRequest& request, uint64_t id) {
   s.requestBuildSeconds = s.previewSeconds = s.prepareSeconds = s.passSeconds = 0.0;
   s.phaseName.clear();
   s.phaseFraction = -1.0;
+  s.history.clear();
   s.started = std::chrono::steady_clock::now();
   const Timer requestTimer;  // every phase counts in the pane's time
   // A switch of technique or view: never the old picture under the new name.
@@ -238,6 +239,13 @@ void PaneRenderer::render(const RenderRequest& request, uint64_t id) {
       if (preview) {
         s.previewSeconds = timer.seconds();
       } else {
+        if (request.keepHistory) {  // log-spaced: the point before the latest stays if 1.5x older
+          auto& h = s.history;
+          if (h.size() >= 2 && s.seconds < 1.5 * h[h.size() - 2].first)
+            h.back() = {s.seconds, s.image};
+          else
+            h.emplace_back(s.seconds, s.image);
+        }
         s.prepareSeconds = job.stats().prepareSeconds;
         s.passSeconds = job.stats().renderSeconds;
       }

@@ -38,6 +38,7 @@ struct RenderRequest {
   ParamSet techniqueParams, accelParams;
   RenderSettings settings;
   PaneView view = PaneView::Image;
+  bool keepHistory = false;  // keep the image of passes, log-spaced in time (the cost-of-accuracy plot)
 };
 
 struct PaneSnapshot {
@@ -75,6 +76,9 @@ struct PaneSnapshot {
   std::map<std::string, std::string> taskViolations;  // task id -> the rule its code broke
   std::map<std::string, bool> tasksRan;  // student tasks the render called -> answered by the reference
   std::string error;                     // set when phase == Failed
+  // With RenderRequest::keepHistory: (seconds, image) of this request's passes, each
+  // at least 1.5x the time of the one before it, and the latest pass last.
+  std::vector<std::pair<double, std::shared_ptr<const Image>>> history;
 };
 
 class PaneRenderer {

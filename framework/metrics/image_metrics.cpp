@@ -168,6 +168,18 @@ float percentile99(const std::vector<float>& values) {
 
 }  // namespace
 
+double relativeMse(const Image& a, const Image& b) {
+  requireSameSize("relativeMse", a, b);
+  double rel = 0.0;
+  for (size_t i = 0; i < a.pixelCount(); ++i)
+    for (int c = 0; c < 3; ++c) {
+      const double d = static_cast<double>(a.pixels()[i][c]) - static_cast<double>(b.pixels()[i][c]);
+      const double vb = static_cast<double>(b.pixels()[i][c]);
+      rel += d * d / (vb * vb + 1e-2);
+    }
+  return rel / (3.0 * static_cast<double>(a.pixelCount()));
+}
+
 ImageError compareImages(const Image& a, const Image& b) {
   requireSameSize("compareImages", a, b);
   double sq = 0.0, rel = 0.0, sqClamped = 0.0, maxAbs = 0.0, sumA = 0.0, sumB = 0.0;

@@ -15,6 +15,9 @@ namespace ll {
 // field says otherwise, averages run over every pixel and all three channels
 // of the linear (not sRGB-encoded, not clamped) values. Non-finite pixel
 // values are not filtered out: they make the affected fields NaN or inf.
+// ImageError::relmse alone (no SSIM): cheap enough for a curve of many images. Same sizes required.
+double relativeMse(const Image& a, const Image& b);
+
 struct ImageError {
   // Root-mean-square error sqrt(mean (a-b)^2), in the images' own linear units
   // (radiance). 0 for identical images; lower is better.
