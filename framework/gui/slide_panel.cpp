@@ -230,7 +230,11 @@ void drawSlidePanel(AppState& app, float x, float y, float w, float h) {
                    ImGuiWindowFlags_NoBringToFrontOnFocus);
   const ImGuiStyle& style = ImGui::GetStyle();
   const float buttonH = ImGui::GetFrameHeight() * 1.6f;
-  const float footer = buttonH + ImGui::GetTextLineHeightWithSpacing() * 2.0f + style.ItemSpacing.y * 3.0f;
+  const Slide& slide = p.deck->slides[static_cast<size_t>(p.index)];
+  const std::string keys = std::string("Tab controls   N notes") + (slide.notes.empty() ? " (none)" : "") +
+                           "   P labels   I stats   H hide   F11 full screen";
+  const float keysH = ImGui::CalcTextSize(keys.c_str(), nullptr, false, w - 2.0f * style.WindowPadding.x).y;
+  const float footer = buttonH + ImGui::GetTextLineHeightWithSpacing() + keysH + style.ItemSpacing.y * 4.0f;
   // A formula too wide even when shrunk widens the text: the panel then scrolls sideways.
   ImGui::BeginChild("##slidetext", ImVec2(0, std::max(h - footer - style.WindowPadding.y * 2.0f, 50.0f)), false,
                     ImGuiWindowFlags_HorizontalScrollbar);
@@ -261,9 +265,10 @@ void drawSlidePanel(AppState& app, float x, float y, float w, float h) {
   if (ImGui::Button("Next \xE2\x86\x92", ImVec2(half, buttonH))) requestStep(app, 1);
   ImGui::EndDisabled();
   recordWidget(app, "slides.next");
-  const Slide& s = p.deck->slides[static_cast<size_t>(p.index)];
   ImGui::TextColored(kDim, "%d / %d   %s", p.index + 1, p.count(), p.deck->title.c_str());
-  ImGui::TextColored(kDim, "Tab controls   N notes%s   F11 full screen", s.notes.empty() ? " (none)" : "");
+  ImGui::PushStyleColor(ImGuiCol_Text, kDim);
+  ImGui::TextWrapped("%s", keys.c_str());
+  ImGui::PopStyleColor();
   ImGui::End();
 }
 
