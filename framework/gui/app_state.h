@@ -163,6 +163,7 @@ struct AppState {
   bool projector = false;    // P: one large one-line label per pane naming what differs; stats on I
   bool showStats = false;    // I: in projector mode, each pane's full caption (passes, time, error)
   bool panelHidden = false;  // H: no side panel (or slide text); the panes take the window
+  std::chrono::steady_clock::time_point panelHiddenAt;  // for the hint that brings it back
   bool showPlot = false;     // the cost-of-accuracy plot beside the panes
   bool submittedPlot = false;  // showPlot as of the last submit (turning it on restarts the panes)
   std::string plotPngRequest;                  // non-empty: save the plot's pixels there after the next frame

@@ -80,7 +80,10 @@ void onKey(GLFWwindow* window, int key, int scancode, int action, int mods) {
   // The lecture hall: projector labels, stats on demand, the side panel out of the way.
   if (key == GLFW_KEY_P) app->projector = !app->projector;
   if (key == GLFW_KEY_I) app->showStats = !app->showStats;
-  if (key == GLFW_KEY_H) app->panelHidden = !app->panelHidden;
+  if (key == GLFW_KEY_H) {
+    app->panelHidden = !app->panelHidden;
+    app->panelHiddenAt = std::chrono::steady_clock::now();
+  }
 }
 
 // Rebuilds the font atlas when the effective scale changed (between frames).

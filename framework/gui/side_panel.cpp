@@ -338,7 +338,10 @@ void lectureHallSection(AppState& app) {
       "One line per pane in large type, naming only what differs between the panes (technique, "
       "accelerator, 'depth 2', '64 spp'). On by default in presenter mode.");
   ImGui::Checkbox("stats under the labels (I)", &app.showStats);
-  if (ImGui::Button("Hide this panel (H)")) app.panelHidden = true;
+  if (ImGui::Button("Hide this panel (H)")) {
+    app.panelHidden = true;
+    app.panelHiddenAt = std::chrono::steady_clock::now();
+  }
   recordWidget(app, "hall.hide");
   ImGui::Checkbox("cost-of-accuracy plot", &app.showPlot);
   recordWidget(app, "hall.plot");

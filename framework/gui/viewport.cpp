@@ -456,6 +456,11 @@ void drawViewportContent(AppState& app, float x, float y, float w, float h);  //
 void drawViewport(AppState& app, float x, float y, float w, float h) {
   drawViewportContent(app, x, y, w, h);
   errorToast(ImGui::GetBackgroundDrawList(), app, {x, y, w, h});
+  // For a few seconds after hiding the panel: how to bring it back.
+  if (app.panelHidden && secondsSince(app.panelHiddenAt) < 6.0)
+    captionBox(app.overlayRects, ImGui::GetBackgroundDrawList(), x + 8.0f, y + h - 8.0f,
+               {app.presenter.active() ? "H shows the slide again" : "H shows the panel again"},
+               IM_COL32(0, 0, 0, 200), w - 16.0f, Anchor::Bottom);
 }
 
 namespace {
