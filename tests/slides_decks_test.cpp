@@ -1,6 +1,6 @@
 // Every preset named in every deck under slides/ loads and renders headless
 // (tiny: 40 pixels wide, one pass): a finite, non-uniform picture, and in the
-// solution build no student stub ran. One test per deck.
+// solution build no student stub ran; every slide has speaker notes. One test per deck.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -54,6 +54,16 @@ TEST_P(SlideDeck, EveryPresetLoadsAndRendersHeadless) {
     }
   }
   EXPECT_GT(presets, 0) << "a deck without a single figure";
+}
+
+// The lecturer's notes: every slide has some, written out (not a placeholder line).
+TEST_P(SlideDeck, EverySlideHasSpeakerNotes) {
+  const fs::path path = (fs::path(LIGHTLAB_DATA_DIR) / ".." / "slides" / (GetParam() + ".md")).lexically_normal();
+  const Deck deck = loadDeck(path.string());
+  for (const Slide& slide : deck.slides) {
+    SCOPED_TRACE(path.string() + " (" + slide.anchor + ")");
+    EXPECT_GE(slide.notes.size(), 120u) << "no speaker notes (a `Note:` line and what follows it)";
+  }
 }
 
 GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(SlideDeck);
