@@ -16,6 +16,11 @@
 namespace ll::gui {
 
 namespace {
+// Thrown from a superseded request's progress report; caught (and dropped) by the worker loop.
+struct Superseded : std::exception {
+  const char* what() const noexcept override { return "superseded by a newer request"; }
+};
+
 // A first pass expected to be slower than this gets a quick low-resolution
 // preview first, sized to take about kPreviewTarget, so opening a heavy scene
 // or dragging the camera shows something at once. A pass of unknown cost (a
@@ -111,6 +116,9 @@ void PaneRenderer::publish(const PaneSnapshot& s) {
 
 void PaneRenderer::setPhase(uint64_t id, const std::string& phase, double fraction) {
   std::lock_guard lock(mutex_);
+  // A newer request, stop() or closing: the work reporting here (a radiosity solve, a
+  // pass) is of no use any more. Unwinding from its progress report ends it at once.
+  if (quit_ || id != submitted_) throw Superseded();
   if (snapshot_.request != id) return;
   if (snapshot_.phaseName != phase || fraction == 0.0) {  // a new phase, or the next pass
     snapshot_.phaseName = phase;
@@ -218,6 +226,14 @@ void PaneRenderer::render(const RenderRequest& request, uint64_t id) {
       if (pending_ || quit_) return false;
       running_ = &job;
     }
+    // running_ must not outlive the job, however run() ends (a technique's error, Superseded).
+    struct Unregister {
+      PaneRenderer* self;
+      ~Unregister() {
+        std::lock_guard lock(self->mutex_);
+        self->running_ = nullptr;
+      }
+    } unregister{this};
     s.phase = PaneSnapshot::Phase::Rendering;
     if (!preview) {
       s.passes = 0;
@@ -257,10 +273,6 @@ void PaneRenderer::render(const RenderRequest& request, uint64_t id) {
       publish(s);
       setPhase(id, preview ? "preview" : "pass", preview ? -1.0 : 0.0);
     });
-    {
-      std::lock_guard lock(mutex_);
-      running_ = nullptr;
-    }
     return !job.cancelled();
   };
 
@@ -280,14 +292,14 @@ void PaneRenderer::render(const RenderRequest& request, uint64_t id) {
 
 void PaneRenderer::renderCost(const RenderRequest& request, uint64_t id, PaneSnapshot s, const Timer& requestTimer) {
   std::atomic<bool> cancel{false};
+  s.phase = PaneSnapshot::Phase::Rendering;
+  publish(s);
+  setPhase(id, "cost image", -1.0);  // (may throw Superseded: before runningCost_ points here)
   {
     std::lock_guard lock(mutex_);
     if (pending_ || quit_) return;
     runningCost_ = &cancel;
   }
-  s.phase = PaneSnapshot::Phase::Rendering;
-  publish(s);
-  setPhase(id, "cost image", -1.0);
   const Timer timer;
   const Camera camera = renderCamera(*request.scene, request.settings);
   const CostMetric metric = request.view == PaneView::NodesVisited ? CostMetric::NodesVisited

@@ -177,5 +177,28 @@ TEST(PaneRenderer, APassReportsItsProgressTileByTile) {
   EXPECT_GE(percents.size(), 2u) << "the pass's fraction should rise while it renders";
 }
 
+TEST(PaneRenderer, ALongRadiositySolveStopsWhenANewRequestArrives) {
+  const auto scene = std::make_shared<const Scene>(loadScene(kScenes + "cornell_box.json"));
+  PaneRenderer pane;
+  // Hemicubes of 256 x 256 cells for 7488 patches: more than a minute of form factors if not cancelled.
+  RenderRequest slow = request(scene, 1, 1);
+  slow.technique = "radiosity";
+  slow.techniqueParams = ParamSet("technique 'radiosity'", findTechnique("radiosity").params);
+  slow.techniqueParams.set("hemicube_res", "256");
+  pane.submit(slow);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (pane.snapshot().phaseName.rfind("form factors", 0) != 0 && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  ASSERT_EQ(pane.snapshot().phaseName.rfind("form factors", 0), 0u) << pane.snapshot().phaseName;
+  const RenderRequest fast = request(scene, 1, 1);
+  pane.submit(fast);
+  waitFinished(pane);  // within its 120 s, long before the form factors could end
+  const PaneSnapshot s = pane.snapshot();
+  EXPECT_EQ(s.phase, PaneSnapshot::Phase::Done);
+  EXPECT_EQ(s.imageShows, "raycast");
+  ASSERT_TRUE(s.image);
+  EXPECT_EQ(s.image->pixels(), headless(fast).pixels());
+}
+
 }  // namespace
 }  // namespace ll::gui
