@@ -336,7 +336,7 @@ void submitPanes(AppState& app) {
     r.settings = renderSettings(app, pane);
     r.view = pane.view;
     r.keepHistory = app.showPlot;
-    pane.renderer->submit(std::move(r));
+    pane.submitted = pane.renderer->submit(std::move(r));
   }
 }
 

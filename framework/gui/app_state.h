@@ -40,6 +40,7 @@ struct PaneState {
   PaneView view = PaneView::Image;
   std::unique_ptr<PaneRenderer> renderer = std::make_unique<PaneRenderer>();
   bool dirty = true;  // settings changed since the last submit
+  uint64_t submitted = 0;  // the renderer's id of the last submit (shown.request lags it until the worker starts)
   bool bannerOpen = false;  // the student-task banner under the picture, unfolded (one line per task)
 
   PaneSnapshot shown;  // copied from the renderer once per UI frame

@@ -11,6 +11,7 @@
 
 #include "core/error.h"
 #include "gui/app_actions.h"
+#include "gui/viewport.h"
 
 namespace ll::gui {
 
@@ -77,7 +78,8 @@ std::string saveScreenshotSidecar(const AppState& app, const std::string& path, 
             {"elapsed", p.shown.elapsed()},
             // Whether the pane's picture is on screen (false: the neutral placeholder while it has none
             // of its current technique).
-            {"image_on_screen", p.texture.valid() && p.shown.image && p.texture.version() > p.shown.clearedAt},
+            {"image_on_screen", imageOnScreen(p)},
+            {"request_current", p.shown.request == p.submitted},  // the worker reports on the last submit
             {"image_shows", p.shown.imageShows},
             {"error_history", p.errorHistory}};
     if (p.shown.image) pj["image_size"] = {p.shown.image->width(), p.shown.image->height()};

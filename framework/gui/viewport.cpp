@@ -148,10 +148,6 @@ std::string phaseLine(const PaneSnapshot& s) {
   return buf;
 }
 
-// Whether the pane's texture shows its current image (not one from before a technique switch).
-bool imageOnScreen(const PaneState& p) {
-  return p.texture.valid() && p.shown.image && p.texture.version() > p.shown.clearedAt;
-}
 
 std::vector<std::string> paneCaption(const AppState& app, int index, const std::string& differs) {
   const PaneState& p = app.panes[static_cast<size_t>(index)];
@@ -409,7 +405,8 @@ void drawPlaceholder(AppState& app, ImDrawList* dl, const PaneState& p, Rect r) 
   float size = 0.0f;
   ImFont* font = labelFont(app, &size);
   const PaneSnapshot& s = p.shown;
-  std::string status = s.phase == PaneSnapshot::Phase::Idle     ? "waiting for the scene"
+  std::string status = s.request != p.submitted                 ? "starting"
+                       : s.phase == PaneSnapshot::Phase::Idle     ? "waiting for the scene"
                        : s.phase == PaneSnapshot::Phase::Failed ? "failed"
                        : s.phase == PaneSnapshot::Phase::Stopped ? "stopped"
                                                                  : phaseLine(s);
@@ -452,6 +449,12 @@ Rect layoutPlot(AppState& app, Rect area, Rect* plot) {
 void drawViewportContent(AppState& app, float x, float y, float w, float h);  // below
 
 }  // namespace
+
+bool imageOnScreen(const PaneState& p) {
+  // What the pane is set to show; until the worker takes a switch up, the old image is not it.
+  const std::string shows = p.view == PaneView::Image ? p.technique : p.accelerator + " cost";
+  return p.texture.valid() && p.shown.image && p.texture.version() > p.shown.clearedAt && p.shown.imageShows == shows;
+}
 
 void drawViewport(AppState& app, float x, float y, float w, float h) {
   drawViewportContent(app, x, y, w, h);

@@ -18,6 +18,10 @@ void drawViewport(AppState& app, float x, float y, float w, float h);
 // mode dragging near the split line moves it. Keys: WASD/QE fly (Shift x4).
 void handleCameraInput(AppState& app, GLFWwindow* window, float x, float y, float w, float h);
 
+// Whether the pane's texture shows an image of its current technique (or
+// cost view): false from a switch until the new technique's first image.
+bool imageOnScreen(const PaneState& p);
+
 // One-letter pane names used everywhere in the GUI: A, B, C, D.
 inline char paneLetter(int pane) {
   return static_cast<char>('A' + pane);

@@ -81,14 +81,21 @@ reveal sw3 A.technique:radiosity A.technique.list
 xdotool mousemove $(centre sw3 A.technique:radiosity) sleep 0.2 click 1
 switched=$SECONDS
 n=0
-until_shot sw4 "j['panes'][0]['technique'] == 'radiosity'" 30
-python3 - sw4.json <<'PY'
+# Every screenshot from the click on: never the ray-cast picture; the first one reporting on the new
+# request (the worker took it up) names its phase.
+old="j['panes'][0]['image_on_screen'] and j['panes'][0]['image_shows'] != 'radiosity'"
+for k in $(seq 100); do
+  shot "sw4_$k"
+  [ "$(q "sw4_$k.json" "$old")" = False ] || fail "sw4_$k: the ray-cast picture is on screen under radiosity"
+  [ "$(q "sw4_$k.json" "j['panes'][0]['technique'] == 'radiosity' and j['panes'][0]['request_current']")" = True ] && break
+done
+python3 - "sw4_$k.json" <<'PY'
 import json, sys
 p = json.load(open(sys.argv[1]))['panes'][0]
-print(f"first screenshot after the switch: phase '{p['phase_name']}' {p['phase_fraction']:.2f}, {p['elapsed']:.2f} s into the request, "
-      f"image on screen: {p['image_on_screen']} ({p['image_shows']})")
+print(f"first screenshot on the new request: phase '{p['phase_name']}' {p['phase_fraction']:.2f}, {p['elapsed']:.2f} s into it, "
+      f"picture on screen: {p['image_on_screen']} ({p['image_shows'] or 'none'})")
+assert p['request_current'], 'the worker never took the switch up'
 assert p['phase_name'], 'no phase named'
-assert not (p['image_on_screen'] and p['image_shows'] != 'radiosity'), 'the ray-cast picture is still shown'
 PY
 phases=
 while :; do

@@ -18,7 +18,8 @@ common=(--quiet render data/scenes/cornell_box.json -t raycast -a none --width 1
 "$LL" "${common[@]}" --set light_samples=16 -o "$OUT/cornell16.pfm" >/dev/null
 "$LL" --quiet render data/scenes/whitted_1980.json -t whitted -a bvh --width 160 --height 120 --spp 1 \
   -o "$OUT/whitted.pfm" >/dev/null
-"$LL" --quiet slides build "$DECK" --out "$OUT/html" >/dev/null
+# (--max-width 160: the figure's panes at the GUI's size, not the page's 2x.)
+"$LL" --quiet slides build "$DECK" --out "$OUT/html" --max-width 160 >/dev/null
 python3 -c "import base64,re,sys; h=open('$OUT/html/presenter_deck.html').read(); \
 m=re.search(r'id=\"fig-whitted\" alt=\"[^\"]*\" src=\"data:image/png;base64,([^\"]+)\"', h); \
 open('$OUT/figure_whitted.png','wb').write(base64.b64decode(m.group(1)))"
