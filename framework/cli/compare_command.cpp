@@ -46,7 +46,7 @@ Command addCompareCommand(CLI::App& app, const GlobalOptions&) {
       j["diff_scale_max"] = used;
     }
     if (o->json) {
-      std::cout << j.dump(2) << "\n";
+      std::cout << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
     } else if (!o->metric.empty()) {
       std::printf("%s %.6g\n", o->metric.c_str(), metricValue(e, o->metric));
     } else {

@@ -84,7 +84,7 @@ Command addInfoCommand(CLI::App& app, const GlobalOptions&) {
     const Scene scene = loadScene(o->scene);
     const nlohmann::json j = describe(scene);
     if (o->json) {
-      std::cout << j.dump(2) << "\n";
+      std::cout << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
       return;
     }
     std::printf("scene      %s\n", scene.path.c_str());

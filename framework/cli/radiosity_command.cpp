@@ -150,7 +150,7 @@ Command addRadiosityCommand(CLI::App& app, const GlobalOptions& global) {
     createParentDirectory(o->json);
     std::ofstream file(o->json);
     if (!file) throwUserError(o->json + ": cannot write");
-    file << out.dump(1) << "\n";
+    file << out.dump(1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
     std::printf("wrote %s\n", o->json.c_str());
   };
 }

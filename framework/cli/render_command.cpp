@@ -112,7 +112,7 @@ Command addRenderCommand(CLI::App& app, const GlobalOptions& global) {
       createParentDirectory(o->statsPath);
       std::ofstream out(o->statsPath);
       if (!out) throwUserError(o->statsPath + ": cannot write statistics file");
-      out << stats.toJson().dump(2) << "\n";
+      out << stats.toJson().dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
     }
     for (const auto& [id, what] : stats.missingTasks)
       std::fprintf(stderr, "lightlab: %s not implemented: %s -- %s\n", id.c_str(), what.c_str(),

@@ -106,7 +106,7 @@ void build(const SlidesOptions& o, const GlobalOptions& global) {
     std::printf("wrote %s (%zu slides, %.0f figures)\n", page.string().c_str(), deck.slides.size(), figures);
   }
   const fs::path manifestPath = fs::path(o.out) / "figures.json";
-  std::ofstream(manifestPath) << manifest.dump(2) << "\n";
+  std::ofstream(manifestPath) << manifest.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
   if (failed > 0)
     throwUserError(std::to_string(failed) + " of " + std::to_string(figureCount) + " figures failed (first: " +
                    firstFailure + "); see " + manifestPath.string());

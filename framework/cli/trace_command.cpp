@@ -166,7 +166,7 @@ Command addTraceCommand(CLI::App& app, const GlobalOptions&) {
       if (tree) out["ray_tree"] = treeJson(*tree);
     }
     if (o->json) {
-      std::cout << out.dump(2) << "\n";
+      std::cout << out.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
     } else if (found) {
       std::printf("hit %s (object %u, %s %u) at t = %g\n  position %s\n  normal   %s\n  material %s\n",
                   out["hit"]["object"].get<std::string>().c_str(), out["hit"]["object_id"].get<unsigned>(),

@@ -138,7 +138,8 @@ std::string saveScreenshotSidecar(const AppState& app, const std::string& path, 
   const std::string sidecar = std::filesystem::path(path).replace_extension(".json").string();
   std::ofstream out(sidecar);
   if (!out) throwUserError(sidecar + ": cannot write screenshot sidecar");
-  out << j.dump(2) << "\n";
+  // Bytes that are not UTF-8 (a Latin-1 file name or message) become U+FFFD instead of ending the program.
+  out << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
   return sidecar;
 }
 

@@ -242,7 +242,7 @@ nlohmann::json presetToJson(const ViewPreset& p, const std::string& baseDir) {
 void savePreset(const ViewPreset& preset, const std::string& path) {
   std::ofstream out(path);
   if (!out) throwUserError(path + ": cannot write preset file");
-  out << presetToJson(preset, fs::path(path).parent_path().string()).dump(2) << "\n";
+  out << presetToJson(preset, fs::path(path).parent_path().string()).dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
 }
 
 }  // namespace ll

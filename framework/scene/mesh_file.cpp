@@ -28,7 +28,13 @@ TriangleMesh loadMeshFile(const std::string& path, bool smoothNormals) {
   const auto& allowed = meshExtensions();
   if (std::find(allowed.begin(), allowed.end(), ext) == allowed.end())
     throwUserError(path + ": unknown mesh format '" + ext + "' (allowed: " + joinNames(allowed) + ")");
-  if (!fs::exists(path)) throwUserError("mesh file not found: " + fs::absolute(path).lexically_normal().string());
+  // The error_code overloads: a name too long for the system is a message, not a filesystem_error.
+  std::error_code ec;
+  if (!fs::exists(path, ec)) {
+    if (ec) throwUserError(path + ": cannot open mesh file (" + ec.message() + ")");
+    const fs::path absolute = fs::absolute(path, ec);
+    throwUserError("mesh file not found: " + (ec ? path : absolute.lexically_normal().string()));
+  }
 
   OmMesh mesh;
   mesh.request_vertex_normals();

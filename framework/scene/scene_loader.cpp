@@ -70,7 +70,8 @@ Texture parseTexture(const JsonNode& mat, const std::string& baseDir) {
   const JsonNode n = mat.child("texture");
   if (n.json().is_string()) {
     const std::string file = (fs::path(baseDir) / n.json().get<std::string>()).lexically_normal().string();
-    if (!fs::exists(file)) n.fail("texture file not found: " + file);
+    std::error_code ec;  // (a name too long for the system: a message, not a filesystem_error)
+    if (!fs::exists(file, ec)) n.fail("texture file not found: " + file + (ec ? " (" + ec.message() + ")" : ""));
     tex.kind = Texture::Kind::Image;
     tex.image = std::make_shared<Image>(loadImage(file));
     return tex;
@@ -348,7 +349,8 @@ Scene parseJsonScene(const std::string& text, const std::string& file, const std
 }
 
 Scene loadScene(const std::string& path) {
-  if (!fs::exists(path)) throwUserError(path + ": no such scene file");
+  std::error_code ec;
+  if (!fs::exists(path, ec)) throwUserError(path + ": " + (ec ? "cannot open scene file (" + ec.message() + ")" : "no such scene file"));
   std::string ext = fs::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
   if (ext == ".obj") return loadObjScene(path);

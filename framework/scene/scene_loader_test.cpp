@@ -211,6 +211,19 @@ TEST(SceneLoader, LoadSceneRejectsMissingAndUnknownFiles) {
   EXPECT_EQ(errorOf([&] { loadScene(txt); }), txt + ": unknown scene format '.txt' (allowed: .json, .obj)");
 }
 
+std::string writeFile(const std::string& name, const std::string& content);  // below
+
+// Names longer than the system allows (ENAMETOOLONG) are a one-line error, never a filesystem_error
+// (the scene-JSON fuzzer once ended the program on a texture path like this).
+TEST(SceneLoader, NamesTooLongForTheSystemAreOneLineErrors) {
+  const std::string longName(5000, 'x');
+  EXPECT_TRUE(contains(errorOf([&] { loadScene(tempDir() + "/" + longName + ".json"); }), "cannot open scene file"));
+  const std::string path = writeFile("long_texture.json",
+                                     sceneJson("[]", R"({"grey": {"kd": [0.5, 0.5, 0.5], "texture": ")" + longName +
+                                                         R"(.png"}})"));
+  EXPECT_TRUE(contains(errorOf([&] { loadScene(path); }), "texture file not found")) << path;
+}
+
 // --- Broken scene files: file:line:col and the hint --------------------------------
 
 struct BadCase {
