@@ -9,6 +9,7 @@
 #include <imgui.h>
 
 #include "core/error.h"
+#include "core/markup.h"
 #include "gui/pane_labels.h"
 #include "gui/viewport.h"
 
@@ -68,17 +69,6 @@ std::string secondsTick(int decade) {
 
 std::string errorTick(int decade) { return "1e" + std::to_string(decade); }
 
-std::string xmlEscape(const std::string& s) {
-  std::string out;
-  for (const char c : s) {
-    if (c == '&') out += "&amp;";
-    else if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else out += c;
-  }
-  return out;
-}
-
 std::string title(const AccuracyPlot& plot) {
   if (plot.reference < 0) return "Cost of accuracy: choose a reference pane (Compare: error against)";
   return "Error (relMSE) against " + plot.referenceLabel + ", over wall time";
@@ -95,7 +85,7 @@ std::string accuracyPlotSvg(const AccuracyPlot& plot, int width, int height) {
   o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
     << "\" font-family=\"DejaVu Sans, sans-serif\" font-size=\"14\">\n"
     << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
-    << "<text x=\"" << left << "\" y=\"24\" font-size=\"16\">" << xmlEscape(title(plot)) << "</text>\n";
+    << "<text x=\"" << left << "\" y=\"24\" font-size=\"16\">" << escapeMarkup(title(plot)) << "</text>\n";
   for (int d = static_cast<int>(plot.x0); d <= static_cast<int>(plot.x1); ++d) {
     const double x = left + (d - plot.x0) / (plot.x1 - plot.x0) * pw;
     o << "<line x1=\"" << x << "\" y1=\"" << top << "\" x2=\"" << x << "\" y2=\"" << top + ph
@@ -126,7 +116,7 @@ std::string accuracyPlotSvg(const AccuracyPlot& plot, int width, int height) {
     const double ly = top + 20 + 22 * row++;
     o << "<line x1=\"" << left + pw - 200 << "\" y1=\"" << ly - 5 << "\" x2=\"" << left + pw - 176 << "\" y2=\""
       << ly - 5 << "\" stroke=\"" << color << "\" stroke-width=\"4\"/><text x=\"" << left + pw - 170 << "\" y=\""
-      << ly << "\">" << xmlEscape(s.label) << "</text>\n";
+      << ly << "\">" << escapeMarkup(s.label) << "</text>\n";
   }
   o << "</svg>\n";
   return o.str();

@@ -4,21 +4,11 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/markup.h"
+
 namespace ll {
 
 namespace {
-
-std::string escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '&') out += "&amp;";
-    else if (c == '\'') out += "&#39;";
-    else out += c;
-  }
-  return out;
-}
 
 constexpr const char* kColours[] = {"#c0392b", "#2459a8", "#2e8540", "#d4a017", "#8e44ad", "#16a085"};
 
@@ -46,7 +36,7 @@ std::string logLogSvg(const std::vector<PlotSeries>& series, const std::string& 
   std::ostringstream out;
   out << "<svg xmlns='http://www.w3.org/2000/svg' width='" << w << "' height='" << h
       << "' font-family='sans-serif' font-size='12'>\n<rect width='100%' height='100%' fill='white'/>\n"
-      << "<text x='" << left << "' y='24' font-size='14'>" << escape(title) << "</text>\n";
+      << "<text x='" << left << "' y='24' font-size='14'>" << escapeMarkup(title) << "</text>\n";
   for (double d = xlo; d <= xhi; d += 1.0) {
     const double px = left + (w - left - right) * (d - xlo) / (xhi - xlo);
     out << "<line x1='" << px << "' x2='" << px << "' y1='" << top << "' y2='" << h - bottom
@@ -59,9 +49,9 @@ std::string logLogSvg(const std::vector<PlotSeries>& series, const std::string& 
         << "' stroke='#ddd'/><text x='" << left - 8 << "' y='" << py + 4 << "' text-anchor='end'>1e" << d
         << "</text>\n";
   }
-  out << "<text x='" << (left + w - right) / 2 << "' y='" << h - 12 << "' text-anchor='middle'>" << escape(xLabel)
+  out << "<text x='" << (left + w - right) / 2 << "' y='" << h - 12 << "' text-anchor='middle'>" << escapeMarkup(xLabel)
       << "</text>\n<text x='16' y='" << (top + h - bottom) / 2 << "' transform='rotate(-90 16 "
-      << (top + h - bottom) / 2 << ")' text-anchor='middle'>" << escape(yLabel) << "</text>\n";
+      << (top + h - bottom) / 2 << ")' text-anchor='middle'>" << escapeMarkup(yLabel) << "</text>\n";
   for (size_t k = 0; k < series.size(); ++k) {
     const char* colour = kColours[k % (sizeof(kColours) / sizeof(kColours[0]))];
     out << "<polyline fill='none' stroke='" << colour << "' stroke-width='2' points='";
@@ -71,10 +61,10 @@ std::string logLogSvg(const std::vector<PlotSeries>& series, const std::string& 
     for (const PlotPoint& p : series[k].points) {
       if (!(p.x > 0.0 && p.y > 0.0)) continue;
       out << "<circle cx='" << x(p.x) << "' cy='" << y(p.y) << "' r='3' fill='" << colour << "'/><text x='"
-          << x(p.x) + 5 << "' y='" << y(p.y) - 5 << "' font-size='10'>" << escape(p.label) << "</text>\n";
+          << x(p.x) + 5 << "' y='" << y(p.y) - 5 << "' font-size='10'>" << escapeMarkup(p.label) << "</text>\n";
     }
     out << "<text x='" << w - right + 8 << "' y='" << top + 16 * static_cast<double>(k + 1) << "' fill='" << colour
-        << "'>" << escape(series[k].name) << "</text>\n";
+        << "'>" << escapeMarkup(series[k].name) << "</text>\n";
   }
   out << "</svg>\n";
   return out.str();

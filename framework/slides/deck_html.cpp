@@ -9,6 +9,7 @@
 
 #include "core/base64.h"
 #include "core/error.h"
+#include "core/markup.h"
 
 namespace ll {
 
@@ -22,18 +23,6 @@ std::string readFile(const fs::path& path) {
   std::ostringstream ss;
   ss << in.rdbuf();
   return ss.str();
-}
-
-std::string escapeHtml(const std::string& s) {
-  std::string out;
-  for (const char c : s) {
-    if (c == '&') out += "&amp;";
-    else if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '"') out += "&quot;";
-    else out += c;
-  }
-  return out;
 }
 
 std::string markdownHtml(const std::string& markdown) {
@@ -144,7 +133,7 @@ std::string deckHtml(const Deck& deck, const std::vector<SlideFigure>& figures, 
   std::ostringstream h;
   h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
     << "<meta name=\"generator\" content=\"lightlab slides build\">\n"
-    << "<title>" << escapeHtml(deck.title.empty() ? deck.path : deck.title) << "</title>\n"
+    << "<title>" << escapeMarkup(deck.title.empty() ? deck.path : deck.title) << "</title>\n"
     << "<style>" << katexCss(katex) << "</style>\n<style>" << kStyle << "</style>\n</head><body>\n";
   const std::string marker = kFigureMarker;
   for (size_t i = 0; i < deck.slides.size(); ++i) {
@@ -153,17 +142,17 @@ std::string deckHtml(const Deck& deck, const std::vector<SlideFigure>& figures, 
     std::string figure;
     if (s.preset) {
       std::ostringstream fig;
-      fig << "<figure data-preset=\"" << escapeHtml(s.preset->source) << "\" data-line=\"" << s.preset->line << "\">";
+      fig << "<figure data-preset=\"" << escapeMarkup(s.preset->source) << "\" data-line=\"" << s.preset->line << "\">";
       if (!f.error.empty() || f.png.empty())
-        fig << "<div class=\"failed figure-failed\">figure failed: " << escapeHtml(f.error) << "</div>";
+        fig << "<div class=\"failed figure-failed\">figure failed: " << escapeMarkup(f.error) << "</div>";
       else
-        fig << "<img id=\"" << figureId(s) << "\" alt=\"" << escapeHtml(f.caption) << "\" src=\"data:image/png;base64,"
+        fig << "<img id=\"" << figureId(s) << "\" alt=\"" << escapeMarkup(f.caption) << "\" src=\"data:image/png;base64,"
             << base64(f.png) << "\""
             << (f.width > 0 && f.height > 0
                     ? " width=\"" + std::to_string(f.width) + "\" height=\"" + std::to_string(f.height) + "\""
                     : std::string())
             << ">";
-      if (!f.caption.empty()) fig << "<figcaption>" << escapeHtml(f.caption) << "</figcaption>";
+      if (!f.caption.empty()) fig << "<figcaption>" << escapeMarkup(f.caption) << "</figcaption>";
       fig << "</figure>";
       figure = fig.str();
     }
