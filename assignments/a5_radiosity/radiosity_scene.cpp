@@ -92,13 +92,22 @@ std::shared_ptr<const PatchScene> computePatches(const Scene& scene, const Radio
   buildAccel();
   for (int round = 0; round < r.adaptivePasses && formFactors; ++round) {
     // Solve this mesh, then split where neighbouring patches (sharing a corner) differ too much.
-    reportPhase("adaptive round " + std::to_string(round + 1) + " of " + std::to_string(r.adaptivePasses),
-                static_cast<double>(round) / r.adaptivePasses);
-    const FormFactors f = computeFormFactors(out->mesh, *out->accel, r.formFactors);
+    // Each round reports as it goes (a bar on the terminal, the phase in a pane), so a pane's newer
+    // request cancels it: the report throws.
+    const std::string phase =
+        "adaptive round " + std::to_string(round + 1) + " of " + std::to_string(r.adaptivePasses);
+    FormFactors f;
+    {
+      ProgressBar bar(phase + ": form factors (" + std::to_string(out->mesh.patches.size()) + " patches)",
+                      static_cast<double>(out->mesh.patches.size()), r.quiet);
+      f = computeFormFactors(out->mesh, *out->accel, r.formFactors, nullptr,
+                             [&](size_t done, size_t) { bar.update(static_cast<double>(done)); });
+    }
     const RadiositySystem system{out->mesh.patches, f};
     SolverSettings quick = r.solver;
     quick.method = SolverMethod::GaussSeidel;
-    const std::vector<Rgb> b = solveRadiosity(system, quick).radiosity;
+    const std::vector<Rgb> b =
+        solveRadiosity(system, quick, [&](const SolverStep&) { reportPhase(phase + ": solve"); }).radiosity;
     std::vector<uint8_t> split(b.size(), 0);
     size_t marked = 0;
     for (uint32_t i = 0; i < b.size(); ++i)

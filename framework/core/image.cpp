@@ -115,7 +115,7 @@ void saveImage(const Image& image, const std::string& path, ToneMap tone) {
 }
 
 Image loadImage(const std::string& path) {
-  if (!std::filesystem::exists(path)) throwUserError(path + ": no such image file");
+  checkInputFile(path, "image file", kMaxImageFileBytes);
   const std::string ext = lowerExtension(path);
   if (ext == ".pfm") return loadPfm(path);
   int w = 0, h = 0, n = 0;

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 #include <system_error>
+#include <thread>
 
 #include "core/files.h"
 #include "core/error.h"
@@ -31,11 +32,14 @@ bool isPresetFile(const std::string& path) {
 }
 
 void initPanes(AppState& app) {
+  // The lecture's arc, each showing a first picture after one pass. Radiosity is not among them: it
+  // solves before its first picture (minutes on a 235k-triangle mesh), so it runs only when chosen.
+  static const char* const kDefaults[kMaxPanes] = {"blinn-phong", "raycast", "whitted", "path"};
   const auto& techs = techniques();
   const auto& accels = accelerators();
   for (int i = 0; i < kMaxPanes; ++i) {
-    const size_t t = std::min(static_cast<size_t>(i), techs.size() - 1);
-    setTechnique(app, i, techs[t].name);
+    const bool known = std::any_of(techs.begin(), techs.end(), [&](const TechniqueInfo& t) { return t.name == kDefaults[i]; });
+    setTechnique(app, i, known ? kDefaults[i] : techs[std::min(static_cast<size_t>(i), techs.size() - 1)].name);
     setAccelerator(app, i, accels.size() > 1 ? accels[1].name : accels[0].name);
   }
 }
@@ -66,6 +70,8 @@ void addMessage(AppState& app, const std::string& text, bool error) {
 void openScene(AppState& app, const std::string& path, bool keepCamera) {
   if (app.loading.valid()) app.abandonedLoads.push_back(std::move(app.loading));
   app.loadingPath = path;
+  // The time before reading: a save made while the load runs is newer, so the watcher picks it up.
+  app.loadingWriteTime = writeTime(path);
   app.loadKeepsCamera = keepCamera;
   app.loading = std::async(std::launch::async, [path]() -> std::shared_ptr<const Scene> {
     return std::make_shared<Scene>(loadScene(path));
@@ -96,8 +102,10 @@ void pollSceneLoad(AppState& app) {
     addMessage(app, e.what());
   }
   // Remember the file's time even on failure, so a broken file is not reloaded in a loop.
-  app.sceneWriteTime = writeTime(path);
-  if (app.scenePath != path) app.sceneWriteTime = writeTime(app.scenePath);
+  if (app.scenePath == path) {
+    app.sceneWriteTime = app.loadingWriteTime;
+    app.sceneFileMissing = false;
+  }
 }
 
 void watchSceneFile(AppState& app) {
@@ -106,10 +114,14 @@ void watchSceneFile(AppState& app) {
   if (now - app.lastWatch < std::chrono::milliseconds(500)) return;
   app.lastWatch = now;
   const auto t = writeTime(app.scenePath);
-  if (t != fs::file_time_type{} && t != app.sceneWriteTime) {
-    app.sceneWriteTime = t;
-    openScene(app, app.scenePath, true);
+  if (t == fs::file_time_type{}) {
+    if (!app.sceneFileMissing)
+      addMessage(app, app.scenePath + ": the scene file is gone (deleted or renamed); the scene shown stays, "
+                                      "and reloads when the file is back");
+    app.sceneFileMissing = true;
+    return;
   }
+  if (t != app.sceneWriteTime || app.sceneFileMissing) openScene(app, app.scenePath, true);
 }
 
 void waitForSceneLoad(AppState& app) {
@@ -286,8 +298,13 @@ void frameScene(AppState& app) {
   c.width = renderSettings(app, app.panes[0]).width;
   c.height = renderSettings(app, app.panes[0]).height;
   frameBounds(c, b);
+  if (const std::string problem = cameraProblem(c); !problem.empty()) {
+    addMessage(app, "Frame scene: the scene's bounds give no usable camera (" + problem + ")");
+    return;
+  }
   app.camera.eye = c.eye;
   app.camera.target = c.target;
+  app.camera.up = c.up;
   app.cameraChanged = true;
 }
 
@@ -320,10 +337,8 @@ void submitPanes(AppState& app) {
     }
     if (!pane.dirty && !all) continue;
     pane.dirty = false;
-    if (!cameraIsValid(app.camera)) {
-      addMessage(
-          app,
-          "the camera is invalid (eye = target, up parallel to the view, or fov outside (0, 180))");
+    if (const std::string problem = cameraProblem(app.camera); !problem.empty()) {
+      addMessage(app, "the camera is invalid (" + problem + "); Reset in the Camera section restores the scene's");
       continue;
     }
     RenderRequest r;
@@ -459,6 +474,22 @@ bool allPanesFinished(const AppState& app) {
     if (paneActive(app, i) && (p.dirty || !p.renderer->finished())) return false;
   }
   return true;
+}
+
+bool stopAllWork(AppState& app, double seconds) {
+  for (PaneState& p : app.panes)
+    if (p.renderer) p.renderer->stop();
+  const auto deadline = Clock::now() + std::chrono::duration<double>(seconds);
+  const auto ready = [](const std::future<std::shared_ptr<const Scene>>& f) {
+    return !f.valid() || f.wait_for(std::chrono::seconds(0)) == std::future_status::ready;
+  };
+  for (;;) {
+    bool stopped = ready(app.loading) && std::all_of(app.abandonedLoads.begin(), app.abandonedLoads.end(), ready);
+    for (const PaneState& p : app.panes) stopped = stopped && (!p.renderer || p.renderer->finished());
+    if (stopped) return true;
+    if (Clock::now() >= deadline) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
 }
 
 std::vector<std::string> findSceneFiles(const std::vector<std::string>& folders) {

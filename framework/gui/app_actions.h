@@ -67,6 +67,11 @@ void refreshPanes(AppState& app);
 bool paneActive(const AppState& app, int pane);
 bool allPanesFinished(const AppState& app);
 
+// Quitting: cancels every pane's work and waits at most `seconds` for all of it
+// (panes and scene loads) to stop. Returns false if something still runs; the
+// caller then ends the process without joining it (closing must not hang).
+bool stopAllWork(AppState& app, double seconds);
+
 // Whether `path` is a view preset (a .json file tagged "lightlab_preset" near its top).
 bool isPresetFile(const std::string& path);
 

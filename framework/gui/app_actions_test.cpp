@@ -113,6 +113,89 @@ TEST(AppActions, ChangingTheSceneFileOnDiskReloadsItKeepingTheView) {
   fs::remove_all(dir);
 }
 
+// A save made while a (slow) load runs was never picked up: the file's time was taken after the load.
+TEST(AppActions, ASaveMadeDuringALoadIsReloaded) {
+  const fs::path dir = fs::temp_directory_path() / "lightlab_reload_during_load_test";
+  fs::create_directories(dir);
+  const fs::path file = dir / "scene.json";
+  fs::copy_file(kScenes + "tests/sphere_point_light.json", file, fs::copy_options::overwrite_existing);
+  AppState app;
+  makeSmall(app);
+  openScene(app, file.string());
+  // The user saves while the load runs (the load may read either version: what matters is the next look).
+  fs::last_write_time(file, fs::last_write_time(file) + std::chrono::seconds(2));
+  waitForSceneLoad(app);
+  ASSERT_TRUE(app.scene);
+  const uint64_t version = app.sceneVersion;
+  std::this_thread::sleep_for(std::chrono::milliseconds(600));
+  watchSceneFile(app);
+  waitForSceneLoad(app);
+  EXPECT_EQ(app.sceneVersion, version + 1) << "the save made during the load was not reloaded";
+  // And then it settles: no reload without a change.
+  std::this_thread::sleep_for(std::chrono::milliseconds(600));
+  watchSceneFile(app);
+  waitForSceneLoad(app);
+  EXPECT_EQ(app.sceneVersion, version + 1);
+  fs::remove_all(dir);
+}
+
+// Deleting the watched scene said nothing; now it is said once, and the file's return reloads it.
+TEST(AppActions, ADeletedSceneFileIsSaidOnceAndReloadsWhenBack) {
+  const fs::path dir = fs::temp_directory_path() / "lightlab_deleted_scene_test";
+  fs::create_directories(dir);
+  const fs::path file = dir / "scene.json";
+  fs::copy_file(kScenes + "tests/sphere_point_light.json", file, fs::copy_options::overwrite_existing);
+  AppState app;
+  makeSmall(app);
+  openScene(app, file.string());
+  waitForSceneLoad(app);
+  ASSERT_TRUE(app.scene);
+  const uint64_t version = app.sceneVersion;
+  fs::rename(file, dir / "moved.json");
+  const size_t before = app.messages.size();
+  for (int i = 0; i < 3; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(600));
+    watchSceneFile(app);
+  }
+  ASSERT_EQ(app.messages.size(), before + 1);
+  EXPECT_TRUE(contains(app.messages.back().text, "scene.json: the scene file is gone")) << app.messages.back().text;
+  EXPECT_TRUE(app.scene) << "the scene shown stays";
+  fs::rename(dir / "moved.json", file);
+  std::this_thread::sleep_for(std::chrono::milliseconds(600));
+  watchSceneFile(app);
+  waitForSceneLoad(app);
+  EXPECT_EQ(app.sceneVersion, version + 1);
+  fs::remove_all(dir);
+}
+
+// Four panes on the 235k bunny started a radiosity solve of minutes by default.
+TEST(AppActions, TheDefaultPanesStartNoRadiositySolve) {
+  AppState app;
+  initPanes(app);
+  for (const PaneState& p : app.panes) EXPECT_EQ(p.technique.rfind("radiosity", 0), std::string::npos) << p.technique;
+  EXPECT_EQ(app.panes[0].technique, "blinn-phong");
+  EXPECT_EQ(app.panes[3].technique, "path");
+}
+
+// Quitting cancels a long solve and does not wait for it.
+TEST(AppActions, StopAllWorkEndsALongRadiositySolveAtOnce) {
+  AppState app;
+  makeSmall(app);
+  openScene(app, kScenes + "cornell_box.json");
+  waitForSceneLoad(app);
+  ASSERT_TRUE(app.scene);
+  app.paneCount = 1;
+  setTechnique(app, 0, "radiosity");
+  app.panes[0].techniqueParams.set("hemicube_res", "128");  // a minute or more of form factors
+  submitPanes(app);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (app.panes[0].renderer->snapshot().phaseName.rfind("form factors", 0) != 0 &&
+         std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  ASSERT_EQ(app.panes[0].renderer->snapshot().phaseName.rfind("form factors", 0), 0u);
+  EXPECT_TRUE(stopAllWork(app, 2.0)) << "the solve did not stop within 2 s";
+}
+
 TEST(AppActions, EachTechniqueAndAcceleratorKeepsItsOwnParameters) {
   AppState app;
   makeSmall(app);

@@ -116,7 +116,9 @@ struct AppState {
   std::string scenePath;
   std::shared_ptr<const Scene> scene;  // null until the first scene loads
   uint64_t sceneVersion = 0;
-  std::filesystem::file_time_type sceneWriteTime{};
+  std::filesystem::file_time_type sceneWriteTime{};    // of the file as the shown scene was read
+  std::filesystem::file_time_type loadingWriteTime{};  // of the file being loaded, taken before reading it
+  bool sceneFileMissing = false;                       // the watched file is gone (said once)
   bool autoReload = true;
   std::chrono::steady_clock::time_point lastWatch;  // when the scene file's time was last checked
   std::string loadingPath;                          // non-empty while a load runs

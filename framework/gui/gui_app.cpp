@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <filesystem>
 #include <optional>
@@ -19,6 +20,7 @@
 #include "backends/imgui_impl_opengl3.h"
 
 #include "core/error.h"
+#include "core/files.h"
 #include "gpu/offscreen_gl.h"
 #include "gui/app_actions.h"
 #include "gui/assignment_focus.h"
@@ -70,11 +72,11 @@ std::string timestampedName() {
 // within one frame (a quick tap, or xdotool) would be missed by polling.
 void onKey(GLFWwindow* window, int key, int scancode, int action, int mods) {
   (void)scancode;
-  (void)mods;
   auto* app = static_cast<AppState*>(glfwGetWindowUserPointer(window));
   if (!app || action != GLFW_PRESS) return;
   if (key == GLFW_KEY_F11) app->toggleFullscreenRequest = true;
   if (key == GLFW_KEY_F12) app->screenshotRequest = timestampedName();
+  if (key == GLFW_KEY_Q && (mods & GLFW_MOD_CONTROL) != 0) glfwSetWindowShouldClose(window, GLFW_TRUE);
   if (ImGui::GetIO().WantTextInput) return;
   if (handleSlideKey(*app, key)) return;  // presenter mode only
   // The lecture hall: projector labels, stats on demand, the side panel out of the way.
@@ -196,8 +198,7 @@ int runGui(const GuiOptions& options) {
   if (!options.preset.empty()) preset = loadPreset(options.preset);
   std::optional<Deck> deck;
   if (!options.slides.empty()) deck = loadDeck(options.slides);
-  if (!options.scene.empty() && !fs::exists(options.scene))
-    throwUserError(options.scene + ": cannot open file");
+  if (!options.scene.empty()) checkInputFile(options.scene, "scene file", kMaxMeshFileBytes);
   if (!options.assignment.empty())
     if (const std::string problem = assignmentProblem(options.assignment); !problem.empty())
       throwUserError("--assignment: " + problem);
@@ -348,6 +349,13 @@ int runGui(const GuiOptions& options) {
         }
       }
       glfwSwapBuffers(window);
+    }
+    // Closing ends the process within a second, whatever runs: work that does not stop in 0.8 s
+    // (a mesh build on a big scene, a scene load) is left to the operating system.
+    if (!stopAllWork(app, 0.8)) {
+      glfwHideWindow(window);
+      std::fflush(nullptr);
+      std::_Exit(exitStatus);
     }
     for (PaneState& p : app.panes)
       p.renderer.reset();  // join workers while the GL context still exists

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <set>
 #include <thread>
 
@@ -209,6 +210,39 @@ TEST(PaneRenderer, ALongRadiositySolveStopsWhenANewRequestArrives) {
   // factors again (a finished solve would be cached and go straight to its pass).
   const std::string again = waitForFormFactors(pane.submit(slow));
   EXPECT_EQ(again.rfind("form factors", 0), 0u) << again;
+}
+
+// Radiosity on the 235k-triangle Cornell bunny (made by the build) once ignored a switch back to ray
+// casting for over 250 s. Switched away in each of its phases (the patch mesh, and the form factors),
+// the pane shows ray casting within 2 s (a loose bound for a loaded machine; typically well under 1 s).
+TEST(PaneRenderer, SwitchingAwayFromRadiosityOnTheBigBunnyTakesEffectWithinTwoSeconds) {
+  const std::string path = std::string(LIGHTLAB_BUILD_DATA_DIR) + "/scenes/cornell_bunny_235k.json";
+  const auto scene = std::make_shared<const Scene>(loadScene(path));
+  PaneRenderer pane;
+  RenderRequest slow = request(scene, 1, 1);
+  slow.technique = "radiosity";
+  slow.accelerator = "bvh";
+  slow.accelParams = ParamSet("accelerator 'bvh'", findAccelerator("bvh").params);
+  slow.techniqueParams = ParamSet("technique 'radiosity'", findTechnique("radiosity").params);
+  RenderRequest fast = request(scene, 1, 1);
+  fast.accelerator = "bvh";
+  fast.accelParams = slow.accelParams;
+  for (const std::string phase : {"patch mesh", "form factors"}) {
+    SCOPED_TRACE(phase);
+    const uint64_t id = pane.submit(slow);
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    while (!(pane.snapshot().request == id && pane.snapshot().phaseName.rfind(phase, 0) == 0) &&
+           std::chrono::steady_clock::now() < deadline)
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    ASSERT_EQ(pane.snapshot().phaseName.rfind(phase, 0), 0u) << pane.snapshot().phaseName;
+    const auto switched = std::chrono::steady_clock::now();
+    pane.submit(fast);
+    waitFinished(pane);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - switched).count();
+    std::printf("switched away during %s: ray casting shown %.2f s later\n", phase.c_str(), seconds);
+    EXPECT_EQ(pane.snapshot().imageShows, "raycast");
+    EXPECT_LT(seconds, 2.0);
+  }
 }
 
 }  // namespace

@@ -19,6 +19,7 @@
 #include "gui/hot_reload.h"
 #include "gui/param_widgets.h"
 #include "gui/ray_inspector.h"
+#include "gui/view_camera.h"
 #include "gui/viewport.h"
 #include "modules/registry.h"
 #include "tasks/task_catalog.h"
@@ -75,14 +76,20 @@ void cameraSection(AppState& app) {
   edited |= ImGui::DragFloat3("target", &c.target.x, step, 0, 0, "%.3f");
   edited |= ImGui::DragFloat3("up", &c.up.x, 0.01f, -1, 1, "%.3f");
   edited |= ImGui::SliderFloat("fov y (deg)", &c.fovYDeg, 1.0f, 150.0f, "%.1f");
+  // A typed or dragged value that would make the camera unusable is not applied; the reason shows.
+  static std::string refused;
   if (edited) {
-    app.camera = c;
-    app.cameraChanged = true;
+    refused = cameraProblem(c);
+    if (refused.empty()) {
+      app.camera = c;
+      app.cameraChanged = true;
+    }
   }
-  if (ImGui::Button("Frame scene")) frameScene(app);
+  if (!refused.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "not applied: %s", refused.c_str());
+  if (ImGui::Button("Frame scene")) frameScene(app), refused.clear();
   recordWidget(app, "camera.frame");
   ImGui::SameLine();
-  if (ImGui::Button("Reset")) resetCamera(app);
+  if (ImGui::Button("Reset")) resetCamera(app), refused.clear();
   helpMarker(
       "Over the image: left drag orbits, right/middle drag pans, wheel zooms.\nW/A/S/D fly, Q/E "
       "down/up, Shift = faster.");

@@ -3,10 +3,16 @@
 // (no GL, no input state), so they are unit-tested headless.
 #pragma once
 
+#include <string>
+
 #include "core/math.h"
 #include "scene/camera.h"
 
 namespace ll::gui {
+
+// Every move below is all or nothing: a move that would leave the camera
+// invalid (see cameraProblem) leaves it as it was, so no sequence of wheel
+// steps, drags or flights can reach NaN or a degenerate view.
 
 // Turns the eye around the target: yaw about the camera's up vector, pitch
 // about its right vector. Pitch stops 1 degree short of the up axis so the
@@ -18,8 +24,9 @@ void orbit(Camera& camera, float yaw, float pitch);
 // dy > 0 moves it up), so a drag across the image moves the scene with it.
 void pan(Camera& camera, float dx, float dy);
 
-// Moves the eye towards the target: distance *= factor (factor > 0). The
-// distance never drops below 1e-4 of its value, so the target stays ahead.
+// Moves the eye towards the target: distance *= factor (factor > 0), within
+// the limits of a valid camera (the eye stays a representable distance from
+// the target, and within the scene limits).
 void zoom(Camera& camera, float factor);
 
 // Moves eye and target together by `move` in the camera frame
@@ -28,12 +35,16 @@ void fly(Camera& camera, Vec3 move);
 
 // Keeps the view direction and field of view; places the target at the
 // centre of `bounds` and the eye so that the bounding sphere fills the view
-// (the narrower of the vertical and horizontal fields of view).
-// Precondition: bounds not empty.
+// (the narrower of the vertical and horizontal fields of view). If the view
+// direction cannot be computed (eye = target), looks along -z.
+// Precondition: bounds not empty and within the scene limits.
 void frameBounds(Camera& camera, const Bounds3& bounds);
 
-// A camera is usable when eye != target, up is not parallel to the view
-// direction and every number is finite with 0 < fovY < 180.
+// Why a camera cannot be used, in a few words, or "" when it can: every number
+// finite, eye and target within +-kMaxCameraCoordinate, the eye a distance from
+// the target that float arithmetic resolves (at least 1e-5 of their size),
+// up not parallel to the view direction, 0 < fovY < 180.
+std::string cameraProblem(const Camera& camera);
 bool cameraIsValid(const Camera& camera);
 
 }  // namespace ll::gui

@@ -75,6 +75,61 @@ TEST(ViewCamera, ZoomScalesTheDistanceAndNeverReachesTheTarget) {
   EXPECT_TRUE(cameraIsValid(c));
 }
 
+// About 620 wheel steps once made the eye NaN (the distance underflowed to 0); Reset was the only way back.
+TEST(ViewCamera, TenThousandWheelStepsEitherWayLeaveAValidCamera) {
+  for (const float step : {0.85f, 1.0f / 0.85f}) {
+    Camera c = lookingDownZ();
+    for (int i = 0; i < 10000; ++i) {
+      zoom(c, step);
+      ASSERT_TRUE(cameraIsValid(c)) << "step " << i << ": " << cameraProblem(c);
+    }
+    // The eye can come back: zooming the other way works from where it stopped.
+    const float stopped = distance(c);
+    zoom(c, 1.0f / step);
+    EXPECT_NE(distance(c), stopped);
+    EXPECT_TRUE(cameraIsValid(c));
+  }
+  Camera c = lookingDownZ();
+  for (int i = 0; i < 10000; ++i) zoom(c, 0.85f);
+  EXPECT_GT(distance(c), 0.0f);
+  EXPECT_LT(distance(c), 1e-3f) << "the wheel still zooms close to the target";
+}
+
+TEST(ViewCamera, FlyingAndPanningStopAtTheSceneLimits) {
+  Camera c = lookingDownZ();
+  for (int i = 0; i < 10000; ++i) {
+    fly(c, Vec3(0, 0, -1e7f));  // backwards, 1e7 units a frame
+    pan(c, 3.0f, 0.0f);
+  }
+  EXPECT_TRUE(cameraIsValid(c)) << cameraProblem(c);
+  EXPECT_LE(std::abs(c.eye.z), 1e9f);
+  fly(c, Vec3(std::nanf(""), 0, 0));
+  EXPECT_TRUE(cameraIsValid(c)) << "a NaN move is not applied";
+}
+
+// Frame scene after an eye at 1e38 (typed) put the eye on the target: |target - eye|^2 overflowed.
+TEST(ViewCamera, FrameSceneRecoversFromAFarOrDegenerateEye) {
+  Bounds3 b;
+  b.extend(Vec3(-1, -1, -1));
+  b.extend(Vec3(1, 1, 1));
+  for (const Vec3 eye : {Vec3(1e38f, 0, 0), Vec3(0.0f), Vec3(0, 1e30f, 0)}) {
+    Camera c = lookingDownZ();
+    c.eye = eye;
+    frameBounds(c, b);
+    EXPECT_TRUE(cameraIsValid(c)) << cameraProblem(c) << " after an eye at " << eye.x << " " << eye.y;
+    EXPECT_GT(distance(c), 1.0f);
+  }
+}
+
+TEST(ViewCamera, TypedValuesBeyondTheSceneLimitsAreOverflow) {
+  Camera c = lookingDownZ();
+  c.eye.x = 1e38f;
+  EXPECT_EQ(cameraProblem(c), "eye or target beyond +-1e9 scene units (overflow)");
+  c = lookingDownZ();
+  c.target = c.eye + Vec3(0, 0, 1e-9f);
+  EXPECT_EQ(cameraProblem(c), "eye = target");
+}
+
 TEST(ViewCamera, FlyMovesAlongTheCameraFrame) {
   Camera c = lookingDownZ();
   fly(c, Vec3(0, 0, 2));  // forward = towards -z

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
+#include "core/files.h"
 #include "core/params.h"
 #include "modules/registry.h"
 #include "scene/json_document.h"
@@ -182,11 +183,7 @@ ViewPreset parsePreset(const std::string& text, const std::string& file,
 }
 
 ViewPreset loadPreset(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throwUserError(path + ": cannot open preset file");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return parsePreset(ss.str(), path, fs::path(path).parent_path().string());
+  return parsePreset(readTextFile(path, "preset file"), path, fs::path(path).parent_path().string());
 }
 
 nlohmann::json presetToJson(const ViewPreset& p, const std::string& baseDir) {

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/files.h"
 
 namespace ll {
 
@@ -146,9 +147,32 @@ std::pair<int, int> lineColumn(const std::string& text, size_t offset) {
   return {line, col};
 }
 
+// The offset of the first byte at or after `from` that does not belong to a well-formed UTF-8
+// sequence (RFC 3629: no overlong forms, no surrogates, at most U+10FFFF), or npos.
+size_t firstInvalidUtf8(const std::string& s, size_t from) {
+  for (size_t i = from; i < s.size();) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    size_t n = 0;
+    unsigned lo = 0x80, hi = 0xBF;  // the allowed range of the second byte
+    if (c < 0x80) n = 1;
+    else if (c >= 0xC2 && c <= 0xDF) n = 2;
+    else if (c >= 0xE0 && c <= 0xEF) n = 3, lo = c == 0xE0 ? 0xA0 : 0x80, hi = c == 0xED ? 0x9F : 0xBF;
+    else if (c >= 0xF0 && c <= 0xF4) n = 4, lo = c == 0xF0 ? 0x90 : 0x80, hi = c == 0xF4 ? 0x8F : 0xBF;
+    else return i;
+    for (size_t k = 1; k < n; ++k) {
+      if (i + k >= s.size()) return i;
+      const auto b = static_cast<unsigned char>(s[i + k]);
+      if (b < (k == 1 ? lo : 0x80) || b > (k == 1 ? hi : 0xBF)) return i;
+    }
+    i += n;
+  }
+  return std::string::npos;
+}
+
 }  // namespace
 
 JsonDocument::JsonDocument(std::string text, std::string file) : file_(std::move(file)), text_(std::move(text)) {
+  rejectNulBytes(text_, file_, "JSON file");
   const char* begin = text_.data();
   const char* cursor = begin;
   LocatingSax sax(root_, begin, &cursor, offsets_);
@@ -156,8 +180,7 @@ JsonDocument::JsonDocument(std::string text, std::string file) : file_(std::move
   const bool ok = nlohmann::json::sax_parse(first, last, &sax);
   if (!ok) {
     // nlohmann reports the offset just past the offending token: point at its start.
-    const size_t tokenStart = sax.errorOffset > sax.errorToken.size() ? sax.errorOffset - sax.errorToken.size() : 0;
-    auto [line, col] = lineColumn(text_, tokenStart);
+    size_t tokenStart = sax.errorOffset > sax.errorToken.size() ? sax.errorOffset - sax.errorToken.size() : 0;
     std::string detail = sax.errorMessage;
     const size_t colon = detail.find(": ", detail.find("column"));
     if (colon != std::string::npos) detail = detail.substr(colon + 2);
@@ -168,16 +191,18 @@ JsonDocument::JsonDocument(std::string text, std::string file) : file_(std::move
                             detail.find("unexpected '{'") != std::string::npos ||
                             detail.find("unexpected '['") != std::string::npos;
     if (closerExpected && valueFound) detail += " (a missing comma before it?)";
+    // nlohmann quotes the bytes it read, and these are not text: point at the byte and say what happened.
+    if (detail.find("ill-formed UTF-8") != std::string::npos) {
+      detail = "a byte that is not UTF-8 (the file was saved in another encoding, such as Latin-1: save it as UTF-8)";
+      if (const size_t bad = firstInvalidUtf8(text_, tokenStart); bad != std::string::npos) tokenStart = bad;
+    }
+    auto [line, col] = lineColumn(text_, tokenStart);
     throwUserError(file_, line, col, "malformed JSON: " + detail);
   }
 }
 
 JsonDocument JsonDocument::load(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throwUserError(path + ": cannot open file");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return JsonDocument(ss.str(), path);
+  return JsonDocument(readTextFile(path, "JSON file"), path);
 }
 
 std::pair<int, int> JsonDocument::locate(const std::string& pointer) const {

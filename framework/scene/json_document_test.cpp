@@ -167,7 +167,7 @@ TEST(JsonDocument, LoadReadsFileAndNamesItInErrors) {
   EXPECT_EQ(msg.rfind(path + ":6:5: malformed JSON: ", 0), 0u) << msg;
   EXPECT_TRUE(contains(msg, "missing comma")) << msg;
   const std::string missing = std::string(LIGHTLAB_DATA_DIR) + "/scenes/no_such_file.json";
-  EXPECT_EQ(errorOf([&] { JsonDocument::load(missing); }), missing + ": cannot open file");
+  EXPECT_EQ(errorOf([&] { JsonDocument::load(missing); }), missing + ": no such JSON file");
   const JsonDocument ok = JsonDocument::load(std::string(LIGHTLAB_DATA_DIR) + "/scenes/tests/sphere_point_light.json");
   EXPECT_EQ(ok.locate("/objects/0/radius"), std::make_pair(35, 7));
   EXPECT_EQ(ok.locate("/lights/0"), std::make_pair(23, 5));

@@ -9,6 +9,7 @@
 #include <OpenMesh/Core/System/omstream.hh>
 
 #include "core/error.h"
+#include "core/files.h"
 
 namespace ll {
 
@@ -35,6 +36,7 @@ TriangleMesh loadMeshFile(const std::string& path, bool smoothNormals) {
     const fs::path absolute = fs::absolute(path, ec);
     throwUserError("mesh file not found: " + (ec ? path : absolute.lexically_normal().string()));
   }
+  checkInputFile(path, "mesh file", kMaxMeshFileBytes);
 
   OmMesh mesh;
   mesh.request_vertex_normals();

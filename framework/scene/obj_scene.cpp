@@ -1,10 +1,13 @@
 // OBJ + MTL files loaded directly as scenes, through tinyobjloader.
 #include <filesystem>
 #include <map>
+#include <sstream>
 
 #include <tiny_obj_loader.h>
 
 #include "core/error.h"
+#include "core/files.h"
+#include "scene/scene_limits.h"
 #include "scene/scene_loader.h"
 
 namespace ll {
@@ -43,6 +46,8 @@ Material convert(const tinyobj::material_t& m, const std::string& baseDir) {
 }  // namespace
 
 Scene loadObjScene(const std::string& path) {
+  // Checked whole before tinyobjloader reads it, which skips lines it does not know (binary data too).
+  (void)readTextFile(path, "OBJ scene", kMaxMeshFileBytes);
   const std::string baseDir = fs::path(path).parent_path().string();
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;
@@ -105,6 +110,12 @@ Scene loadObjScene(const std::string& path) {
         const auto vi = static_cast<size_t>(idx.vertex_index);
         const Vec3 p(attrib.vertices[3 * vi], attrib.vertices[3 * vi + 1], attrib.vertices[3 * vi + 2]);
         if (!isFinite(p)) throwUserError(path + ": vertex " + std::to_string(vi + 1) + " is not finite");
+        if (!withinSceneLimits(p)) {
+          std::ostringstream s;
+          s << path << ": vertex " << vi + 1 << " reaches " << largestMagnitude(p)
+            << " units: overflow (a scene must stay within +-1e8 units; scale it down)";
+          throwUserError(s.str());
+        }
         g.positions.push_back(p);
         if (hasNormals) {
           const auto ni = idx.normal_index;
@@ -149,10 +160,7 @@ Scene loadObjScene(const std::string& path) {
 
   // A camera framing the bounds from +z, and a light at the eye if nothing emits.
   const Bounds3 b = g.sceneBounds();
-  const float radius = std::max(0.5f * b.diagonal(), 1e-3f);
-  // Beyond this the framing camera's distance and the light's squared distance overflow a float.
-  if (!(radius <= 1e18f))
-    throwUserError(path + ": the model is too large to frame (its bounds span more than 1e18 units)");
+  const float radius = std::max(0.5f * b.diagonal(), 1e-3f);  // vertices within the scene limits: finite
   scene.camera.fovYDeg = 45.0f;
   scene.camera.target = b.center();
   scene.camera.eye = b.center() + Vec3(0.0f, 0.25f * radius, 2.6f * radius);

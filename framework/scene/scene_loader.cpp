@@ -5,12 +5,15 @@
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <sstream>
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/error.h"
+#include "core/files.h"
 #include "scene/json_document.h"
 #include "scene/mesh_file.h"
+#include "scene/scene_limits.h"
 
 namespace ll {
 
@@ -105,6 +108,20 @@ Material parseMaterial(const JsonNode& n, const std::string& name, const std::st
   return m;
 }
 
+// A point the scene places (eye, light, vertex) beyond the limits is overflow: say so at its key.
+std::string overflowMessage(const std::string& what, float magnitude, float limit = kMaxSceneCoordinate) {
+  std::ostringstream s;
+  s << what << " reaches " << magnitude << " scene units: overflow (allowed: within +-" << limit
+    << " units, where float arithmetic stays exact enough; scale the scene down)";
+  return s.str();
+}
+
+Vec3 pointWithinLimits(const JsonNode& n, const std::string& key, float limit = kMaxSceneCoordinate) {
+  const Vec3 p = n.vec3(key);
+  if (!(largestMagnitude(p) <= limit)) n.child(key).fail(overflowMessage(n.child(key).what(), largestMagnitude(p), limit));
+  return p;
+}
+
 Light parseLight(const JsonNode& n) {
   n.requireObject();
   const std::string type = n.string("type");
@@ -112,7 +129,7 @@ Light parseLight(const JsonNode& n) {
   if (type == "point") {
     n.allowOnly({"type", "position", "intensity"});
     l.type = Light::Type::Point;
-    l.position = n.vec3("position");
+    l.position = pointWithinLimits(n, "position");
   } else if (type == "directional") {
     n.allowOnly({"type", "direction", "intensity"});
     l.type = Light::Type::Directional;
@@ -296,8 +313,8 @@ void parseObject(const JsonNode& n, Scene& scene, GeometryBuilder& builder,
 Camera parseCamera(const JsonNode& n) {
   n.allowOnly({"eye", "target", "up", "fov_y_deg", "width", "height"});
   Camera c;
-  c.eye = n.vec3("eye");
-  c.target = n.vec3("target");
+  c.eye = pointWithinLimits(n, "eye", kMaxCameraCoordinate);
+  c.target = pointWithinLimits(n, "target", kMaxCameraCoordinate);
   c.up = n.vec3("up", Vec3(0, 1, 0));
   c.fovYDeg = n.number("fov_y_deg", 0.01f, 179.0f);
   c.width = n.integer("width", 512, 1, 16384);
@@ -337,6 +354,14 @@ Scene parseJsonScene(const std::string& text, const std::string& file, const std
   GeometryBuilder builder(scene);
   for (size_t i = 0; i < objects.size(); ++i) parseObject(objects.at(i), scene, builder, materialIds, baseDir);
   builder.finish();
+  const Geometry& g = scene.geometry;
+  for (uint32_t p = 0; p < g.primitiveCount(); ++p) {
+    const Bounds3 b = g.bounds(p);
+    if (withinSceneLimits(b.min) && withinSceneLimits(b.max)) continue;
+    const uint32_t o = g.objectOf(p);
+    objects.at(o).fail(overflowMessage("object '" + scene.objects[o].name + "'",
+                                       std::max(largestMagnitude(b.min), largestMagnitude(b.max))));
+  }
   scene.finalize();
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     const SceneObject& o = scene.objects[i];
@@ -355,9 +380,7 @@ Scene loadScene(const std::string& path) {
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
   if (ext == ".obj") return loadObjScene(path);
   if (ext != ".json") throwUserError(path + ": unknown scene format '" + ext + "' (allowed: .json, .obj)");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throwUserError(path + ": cannot open file");
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string text = readTextFile(path, "scene file");
   return parseJsonScene(text, path, fs::path(path).parent_path().string());
 }
 

@@ -224,6 +224,44 @@ TEST(SceneLoader, NamesTooLongForTheSystemAreOneLineErrors) {
   EXPECT_TRUE(contains(errorOf([&] { loadScene(path); }), "texture file not found")) << path;
 }
 
+// A scene saved in Latin-1 is one line that says so, without the raw byte.
+TEST(SceneLoader, TextThatIsNotUtf8IsSaidToBeSo) {
+  const std::string path = writeFile("latin1.json", "{\n\"description\": \"f\xfcr\",\n\"camera\": {}}");
+  EXPECT_EQ(errorOf([&] { loadScene(path); }),
+            path + ":2:18: malformed JSON: a byte that is not UTF-8 (the file was saved in another encoding, such as "
+                   "Latin-1: save it as UTF-8)");
+}
+
+// A file too big is refused before a byte is read (a 2 GB file once took 36 s and 4.2 GB of memory
+// to end in "unexpected end of input"); the error states the limit.
+TEST(SceneLoader, FilesOverTheSizeLimitAreRefusedBeforeReading) {
+  const std::string path = tempDir() + "/two_gigabytes.json";
+  {
+    std::ofstream(path, std::ios::binary) << "{";
+  }
+  fs::resize_file(path, 2ull << 30);  // sparse: no disk space, no time
+  const std::string message = errorOf([&] { loadScene(path); });
+  fs::remove(path);
+  EXPECT_EQ(message, path + ": this scene file is 2.0 GB; LightLab reads a scene file of at most 64 MB (is it the right file?)");
+  const std::string folder = tempDir() + "/folder.json";
+  fs::create_directories(folder);
+  EXPECT_EQ(errorOf([&] { loadScene(folder); }), folder + ": is a folder, not a scene file");
+}
+
+// A valid scene followed by NUL bytes (a file overwritten in place, a broken copy) was accepted:
+// the JSON parser stops at the first NUL. Any NUL byte is an error at its line and column.
+TEST(SceneLoader, NulBytesAfterAValidSceneAreAnErrorAtTheirPlace) {
+  const std::string text = sceneJson("[]");
+  const std::string path = writeFile("trailing_nul.json", text + std::string(4096, '\0'));
+  const long lines = std::count(text.begin(), text.end(), '\n');
+  const size_t lastLine = text.rfind('\n');
+  const std::string column = std::to_string(text.size() - (lastLine == std::string::npos ? 0 : lastLine + 1) + 1);
+  EXPECT_EQ(errorOf([&] { loadScene(path); }),
+            path + ":" + std::to_string(lines + 1) + ":" + column +
+                ": a NUL byte (0x00): a scene file is text, and this one holds binary data from here on");
+  EXPECT_NO_THROW(loadScene(writeFile("no_nul.json", text)));
+}
+
 // --- Broken scene files: file:line:col and the hint --------------------------------
 
 struct BadCase {
@@ -373,6 +411,33 @@ TEST(SceneLoader, TransformMatrixAndPartsAreExclusive) {
   EXPECT_TRUE(contains(nonUniform, "spheres take only uniform scale")) << nonUniform;
 }
 
+// A sphere at 1e38 rendered black with no message, and a scene scaled to 1e38 was reported as
+// "camera up is parallel to the view direction": both are overflow, said at the key.
+TEST(SceneLoader, ValuesBeyondTheSceneLimitsAreReportedAsOverflow) {
+  const std::string far = errorOf([] {
+    parse(sceneJson(R"([{"type": "sphere", "material": "grey", "center": [1e38, 0, 0], "radius": 1}])"));
+  });
+  EXPECT_TRUE(contains(far, "mem.json:") && contains(far, ": object '") && contains(far, "reaches 1e+38 scene units: overflow"))
+      << far;
+  const std::string scaled = errorOf([] {
+    parse(sceneJson(R"([{"type": "quad", "material": "grey", "vertices": [[0,0,0],[1,0,0],[1,1,0],[0,1,0]],
+  "transform": {"scale": 1e38}}])"));
+  });
+  EXPECT_TRUE(contains(scaled, "reaches 1e+38 scene units: overflow")) << scaled;
+  const std::string eye = errorOf([] {
+    parse(sceneJson("[]", R"({"grey": {"kd": [0.5, 0.5, 0.5]}})",
+                    R"({"eye": [0, 0, 1e38], "target": [0, 0, 0], "up": [0, 1, 0], "fov_y_deg": 40})"));
+  });
+  EXPECT_TRUE(contains(eye, "eye reaches 1e+38 scene units: overflow")) << eye;
+  const std::string light = errorOf([] {
+    parse(sceneJson("[]", R"({"grey": {"kd": [0.5, 0.5, 0.5]}})",
+                    R"({"eye": [0, 0, 4], "target": [0, 0, 0], "fov_y_deg": 40})",
+                    R"([{"type": "point", "position": [0, -2e8, 0], "intensity": [1, 1, 1]}])"));
+  });
+  EXPECT_TRUE(contains(light, "reaches 2e+08 scene units: overflow")) << light;
+  EXPECT_NO_THROW(parse(sceneJson(R"([{"type": "sphere", "material": "grey", "center": [9e7, 0, 0], "radius": 1e6}])")));
+}
+
 std::string writeFile(const std::string& name, const std::string& content) {
   const std::string path = tempDir() + "/" + name;
   std::ofstream(path, std::ios::binary) << content;
@@ -406,10 +471,14 @@ TEST(SceneLoader, BinaryMeshWithNaNCoordinateIsRejected) {
   EXPECT_TRUE(contains(msg, path + ": vertex 1 has a non-finite coordinate")) << msg;
 }
 
-TEST(SceneLoader, ObjTooLargeToFrameIsAnError) {
+TEST(SceneLoader, ObjTooLargeIsOverflow) {
   // Coordinates so large the framing camera overflowed to inf (found by the OBJ fuzzer).
   const std::string huge = writeFile("huge.obj", "v -1 -1 -1\nv 1 -1 -1\nv -1 1.5e20 1\nf 1 2 3\n");
-  EXPECT_EQ(errorOf([&] { loadScene(huge); }), huge + ": the model is too large to frame (its bounds span more than 1e18 units)");
+  EXPECT_EQ(errorOf([&] { loadScene(huge); }),
+            huge + ": vertex 3 reaches 1.5e+20 units: overflow (a scene must stay within +-1e8 units; scale it down)");
+  // At the limit, the framing camera (2.6 radii away) is still usable.
+  const std::string big = writeFile("big.obj", "v -1e8 -1e8 -1e8\nv 1e8 -1e8 -1e8\nv -1e8 1e8 1e8\nf 1 2 3\n");
+  EXPECT_NO_THROW(loadScene(big));
 }
 
 TEST(SceneLoader, EmptyMeshFileNamesTheFile) {

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/files.h"
 
 namespace ll {
 
@@ -180,11 +181,7 @@ Deck parseDeck(const std::string& text, const std::string& path) {
 }
 
 Deck loadDeck(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in || fs::is_directory(path)) throwUserError(path + ": cannot open slide deck");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return parseDeck(ss.str(), path);
+  return parseDeck(readTextFile(path, "slide deck"), path);
 }
 
 }  // namespace ll

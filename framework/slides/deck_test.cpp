@@ -61,7 +61,7 @@ TEST(Deck, ErrorsNameTheDeckLineAndWhatIsAllowed) {
   EXPECT_TRUE(contains(err("# A\n```preset\nnope.json\n```\n"), "d.md:3: preset file 'nope.json' not found"));
   EXPECT_TRUE(contains(err("# A\n```preset\n```\n"), "d.md:2: empty preset block"));
   EXPECT_TRUE(contains(err("\n\n---\n\n"), "d.md: no slides"));
-  EXPECT_TRUE(contains(errorOf([] { loadDeck("/nonexistent/deck.md"); }), "/nonexistent/deck.md: cannot open slide deck"));
+  EXPECT_TRUE(contains(errorOf([] { loadDeck("/nonexistent/deck.md"); }), "/nonexistent/deck.md: no such slide deck"));
 }
 
 TEST(SlideText, HeadingsBulletsCodeAndMath) {

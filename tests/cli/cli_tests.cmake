@@ -106,8 +106,8 @@ if(LIGHTLAB_WITH_GUI)
   add_test(NAME cli.error.gpu_technique_without_display
            COMMAND env -u DISPLAY bash ${EXPECT_ERROR} "renders with OpenGL and needs a display \\(GLFW error"
                    ${OUT}/gpu.png -- ${LL} render ${SCENES}/cornell_box.json -t blinn-phong-gl -o ${OUT}/gpu.png)
-  lightlab_error_test(gui_missing_preset "nope\\.json: cannot open preset file" gui --preset ${SCENES}/nope.json)
-  lightlab_error_test(gui_missing_scene "nope\\.json: cannot open file" gui ${SCENES}/nope.json)
+  lightlab_error_test(gui_missing_preset "nope\\.json: no such preset file" gui --preset ${SCENES}/nope.json)
+  lightlab_error_test(gui_missing_scene "nope\\.json: no such scene file" gui ${SCENES}/nope.json)
   lightlab_error_test(gui_scene_as_preset "cornell_box\\.json:1:1: not a LightLab view preset: it needs \"lightlab_preset\": 1"
                       gui --preset ${SCENES}/cornell_box.json)
   lightlab_error_test(gui_bad_preset_value "bad_preset\\.json:[0-9]+:[0-9]+: .*light_samples.*\\[1, 1024\\]"
@@ -137,7 +137,7 @@ lightlab_error_test(study_unknown_parameter "technique 'raycast' has no paramete
 
 # Slide decks: a bad deck or preset block is one line naming deck:line (or preset:line:col) and what is allowed.
 set(BAD_DECKS ${PROJECT_SOURCE_DIR}/tests/slides/bad)
-lightlab_error_test(slides_missing_deck "nope\\.md: cannot open slide deck" slides check ${BAD_DECKS}/nope.md)
+lightlab_error_test(slides_missing_deck "nope\\.md: no such slide deck" slides check ${BAD_DECKS}/nope.md)
 lightlab_error_test(slides_unknown_key "unknown_key\\.md:9:2: unknown key 'pane' in preset \\(allowed: lightlab_preset, description, scene"
                     slides check ${BAD_DECKS}/unknown_key.md)
 lightlab_error_test(slides_unknown_technique "unknown_technique\\.md:5:13: unknown technique 'phong' \\(known: blinn-phong, raycast"

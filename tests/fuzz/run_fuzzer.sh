@@ -1,13 +1,26 @@
 #!/usr/bin/env bash
-# Usage: run_fuzzer.sh TARGET FUZZER SECONDS WORKDIR
-# Runs libFuzzer target TARGET (scene_json, obj_scene, command_line) for
-# SECONDS seconds, starting from a seed corpus made from data/ in
-# WORKDIR/corpus (kept between runs: a longer campaign continues from it).
+# Usage: run_fuzzer.sh [--campaign] TARGET FUZZER AMOUNT WORKDIR
+# Runs libFuzzer target TARGET (scene_json, obj_scene, command_line).
+#
+# Default (CI): deterministic. First every saved regression input
+# (tests/fuzz/regressions/TARGET/) is replayed; then AMOUNT inputs are run
+# from a fresh seed corpus made from data/, with a fixed seed. The same code
+# explores the same inputs on every run, so CI fails only on a change, never
+# on a new random find.
+#
+# --campaign: a longer random search, outside CI. Runs for AMOUNT seconds with
+# a random seed, keeps WORKDIR/corpus between runs (a campaign continues where
+# the last one stopped). A crash is saved as WORKDIR/artifacts/crash-*: fix it
+# and keep the input in tests/fuzz/regressions/TARGET/.
+#
 # Fails on any finding; the input that caused it is WORKDIR/artifacts/*.
 set -euo pipefail
-target=$1; fuzzer=$(realpath "$2"); seconds=$3; work=$(realpath -m "$4")
+campaign=0
+if [ "${1:-}" = --campaign ]; then campaign=1; shift; fi
+target=$1; fuzzer=$(realpath "$2"); amount=$3; work=$(realpath -m "$4")
 root=$(cd "$(dirname "$0")/../.." && pwd)
 corpus=$work/corpus
+[ $campaign = 0 ] && rm -rf "$corpus"  # deterministic: the seeds, not what earlier runs added
 mkdir -p "$corpus" "$work/artifacts"
 case "$target" in
   scene_json)
@@ -43,6 +56,16 @@ PY
   *) echo "unknown fuzz target '$target' (allowed: scene_json, obj_scene, command_line)" >&2; exit 2 ;;
 esac
 cd "$work"
-# -timeout: an input taking 10 s is a hang; -rss_limit_mb: one taking 2 GB is a runaway allocation.
-exec "$fuzzer" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
-  -artifact_prefix="$work/artifacts/" "$corpus"
+# -timeout: an input taking 25 s is a hang; -rss_limit_mb: one taking 2 GB is a runaway allocation.
+limits=(-timeout=25 -rss_limit_mb=2048 -artifact_prefix="$work/artifacts/")
+regressions=("$root/tests/fuzz/regressions/$target"/*)
+if [ -e "${regressions[0]}" ]; then
+  echo "replaying ${#regressions[@]} regression inputs of $target"
+  "$fuzzer" "${limits[@]}" "${regressions[@]}"
+fi
+if [ $campaign = 1 ]; then
+  exec "$fuzzer" -max_total_time="$amount" -print_final_stats=1 "${limits[@]}" "$corpus"
+fi
+# A fixed number of runs from a fixed seed; the time cap only guards a very slow machine (it can cut
+# the list short, never change it).
+exec "$fuzzer" -seed=1 -runs="$amount" -max_total_time=240 -print_final_stats=1 "${limits[@]}" "$corpus"
