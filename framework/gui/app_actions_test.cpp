@@ -48,6 +48,22 @@ void makeSmall(AppState& app) {
   for (PaneState& p : app.panes) p.spp = 1;
 }
 
+// A copy of a small scene in its own temporary folder (the watcher tests change and delete it).
+fs::path copyOfScene(const std::string& folder) {
+  const fs::path dir = fs::temp_directory_path() / folder;
+  fs::create_directories(dir);
+  const fs::path file = dir / "scene.json";
+  fs::copy_file(kScenes + "tests/sphere_point_light.json", file, fs::copy_options::overwrite_existing);
+  return file;
+}
+
+// What the GUI does every frame, once the watch's half second has passed: look at the file, finish a load.
+void lookAgain(AppState& app) {
+  std::this_thread::sleep_for(std::chrono::milliseconds(600));
+  watchSceneFile(app);
+  waitForSceneLoad(app);
+}
+
 TEST(AppActions, ABrokenSceneKeepsThePreviousOneAndSaysWhere) {
   AppState app;
   makeSmall(app);
@@ -77,11 +93,7 @@ TEST(AppActions, ABrokenSceneKeepsThePreviousOneAndSaysWhere) {
 }
 
 TEST(AppActions, ChangingTheSceneFileOnDiskReloadsItKeepingTheView) {
-  const fs::path dir = fs::temp_directory_path() / "lightlab_reload_test";
-  fs::create_directories(dir);
-  const fs::path file = dir / "scene.json";
-  fs::copy_file(kScenes + "tests/sphere_point_light.json", file,
-                fs::copy_options::overwrite_existing);
+  const fs::path file = copyOfScene("lightlab_reload_test");
   AppState app;
   makeSmall(app);
   openScene(app, file.string());
@@ -91,34 +103,25 @@ TEST(AppActions, ChangingTheSceneFileOnDiskReloadsItKeepingTheView) {
   app.camera.eye += Vec3(0.1f, 0, 0);  // the user moved the view
 
   fs::last_write_time(file, fs::last_write_time(file) + std::chrono::seconds(2));
-  std::this_thread::sleep_for(std::chrono::milliseconds(600));  // the watch looks twice a second
-  watchSceneFile(app);
-  waitForSceneLoad(app);
+  lookAgain(app);  // the watch looks twice a second
   EXPECT_EQ(app.sceneVersion, version + 1);
   EXPECT_NE(app.camera.eye, app.scene->camera.eye);  // a reload keeps the view
 
   // A broken save is reported once, not reloaded in a loop, and the scene stays.
   std::ofstream(file) << "{ \"camera\": ";
   fs::last_write_time(file, fs::last_write_time(file) + std::chrono::seconds(4));
-  std::this_thread::sleep_for(std::chrono::milliseconds(600));
-  watchSceneFile(app);
-  waitForSceneLoad(app);
+  lookAgain(app);
   EXPECT_EQ(app.sceneVersion, version + 1);
   EXPECT_TRUE(app.messages.back().error);
   const size_t messages = app.messages.size();
-  std::this_thread::sleep_for(std::chrono::milliseconds(600));
-  watchSceneFile(app);
-  waitForSceneLoad(app);
+  lookAgain(app);
   EXPECT_EQ(app.messages.size(), messages);
-  fs::remove_all(dir);
+  fs::remove_all(file.parent_path());
 }
 
 // A save made while a (slow) load runs was never picked up: the file's time was taken after the load.
 TEST(AppActions, ASaveMadeDuringALoadIsReloaded) {
-  const fs::path dir = fs::temp_directory_path() / "lightlab_reload_during_load_test";
-  fs::create_directories(dir);
-  const fs::path file = dir / "scene.json";
-  fs::copy_file(kScenes + "tests/sphere_point_light.json", file, fs::copy_options::overwrite_existing);
+  const fs::path file = copyOfScene("lightlab_reload_during_load_test");
   AppState app;
   makeSmall(app);
   openScene(app, file.string());
@@ -127,24 +130,17 @@ TEST(AppActions, ASaveMadeDuringALoadIsReloaded) {
   waitForSceneLoad(app);
   ASSERT_TRUE(app.scene);
   const uint64_t version = app.sceneVersion;
-  std::this_thread::sleep_for(std::chrono::milliseconds(600));
-  watchSceneFile(app);
-  waitForSceneLoad(app);
+  lookAgain(app);
   EXPECT_EQ(app.sceneVersion, version + 1) << "the save made during the load was not reloaded";
-  // And then it settles: no reload without a change.
-  std::this_thread::sleep_for(std::chrono::milliseconds(600));
-  watchSceneFile(app);
-  waitForSceneLoad(app);
+  lookAgain(app);  // and then it settles: no reload without a change
   EXPECT_EQ(app.sceneVersion, version + 1);
-  fs::remove_all(dir);
+  fs::remove_all(file.parent_path());
 }
 
 // Deleting the watched scene said nothing; now it is said once, and the file's return reloads it.
 TEST(AppActions, ADeletedSceneFileIsSaidOnceAndReloadsWhenBack) {
-  const fs::path dir = fs::temp_directory_path() / "lightlab_deleted_scene_test";
-  fs::create_directories(dir);
-  const fs::path file = dir / "scene.json";
-  fs::copy_file(kScenes + "tests/sphere_point_light.json", file, fs::copy_options::overwrite_existing);
+  const fs::path file = copyOfScene("lightlab_deleted_scene_test");
+  const fs::path dir = file.parent_path();
   AppState app;
   makeSmall(app);
   openScene(app, file.string());
@@ -161,9 +157,7 @@ TEST(AppActions, ADeletedSceneFileIsSaidOnceAndReloadsWhenBack) {
   EXPECT_TRUE(contains(app.messages.back().text, "scene.json: the scene file is gone")) << app.messages.back().text;
   EXPECT_TRUE(app.scene) << "the scene shown stays";
   fs::rename(dir / "moved.json", file);
-  std::this_thread::sleep_for(std::chrono::milliseconds(600));
-  watchSceneFile(app);
-  waitForSceneLoad(app);
+  lookAgain(app);
   EXPECT_EQ(app.sceneVersion, version + 1);
   fs::remove_all(dir);
 }
