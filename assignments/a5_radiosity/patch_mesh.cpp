@@ -5,6 +5,8 @@
 
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 
+#include "core/phase_progress.h"
+
 namespace ll::a5 {
 
 namespace {
@@ -135,6 +137,8 @@ void finish(PatchMesh& out) {
 PatchMesh buildPatchMesh(const Scene& scene, float maxEdge, int sphereSegments) {
   PatchMesh out;
   for (uint32_t o = 0; o < scene.objects.size(); ++o) {
+    // Object by object (a pane's newer request cancels here: the report throws).
+    reportPhase("patch mesh", static_cast<double>(o) / static_cast<double>(scene.objects.size()));
     OmMesh mesh;
     addObjectTriangles(scene, scene.objects[o], sphereSegments, mesh);
     splitLongEdges(mesh, maxEdge);
@@ -147,6 +151,7 @@ PatchMesh buildPatchMesh(const Scene& scene, float maxEdge, int sphereSegments) 
 PatchMesh refinePatchMesh(const Scene& scene, const PatchMesh& mesh, const std::vector<uint8_t>& split) {
   PatchMesh out;
   for (uint32_t o = 0; o < scene.objects.size(); ++o) {
+    reportPhase("patch mesh", static_cast<double>(o) / static_cast<double>(scene.objects.size()));
     // The object's patches back into an OpenMesh mesh (they share their vertices).
     OmMesh m;
     std::map<uint32_t, OmMesh::VertexHandle> vertexOf;

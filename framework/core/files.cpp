@@ -1,6 +1,7 @@
 #include "core/files.h"
 
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <system_error>
@@ -33,7 +34,7 @@ std::string formatBytes(std::uintmax_t bytes) {
   return text;
 }
 
-void checkInputFile(const std::string& path, const std::string& what, std::uintmax_t maxBytes) {
+std::uintmax_t checkInputFile(const std::string& path, const std::string& what, std::uintmax_t maxBytes) {
   namespace fs = std::filesystem;
   // The error_code overloads: a name too long for the system is a message, not a filesystem_error.
   std::error_code ec;
@@ -49,34 +50,67 @@ void checkInputFile(const std::string& path, const std::string& what, std::uintm
   if (size > maxBytes)
     throwUserError(path + ": this " + what + " is " + formatBytes(size) + "; LightLab reads a " + what +
                    " of at most " + formatBytes(maxBytes) + " (is it the right file?)");
+  return size;
 }
 
 std::string readTextFile(const std::string& path, const std::string& what, std::uintmax_t maxBytes) {
-  checkInputFile(path, what, maxBytes);
+  const std::uintmax_t size = checkInputFile(path, what, maxBytes);
   std::ifstream in(path, std::ios::binary);
   if (!in) throwUserError(path + ": cannot open " + what);
-  std::string text;
-  // Read at most one byte past the limit: the file may have grown since it was checked.
-  text.resize(static_cast<size_t>(maxBytes) + 1);
+  // The size it had when checked, plus one byte to notice a file that grew past the limit since.
+  std::string text(static_cast<size_t>(size), '\0');
   in.read(text.data(), static_cast<std::streamsize>(text.size()));
   text.resize(static_cast<size_t>(in.gcount()));
   if (in.bad()) throwUserError(path + ": cannot read " + what);
+  for (char c; text.size() <= maxBytes && in.get(c);) text += c;
   if (text.size() > maxBytes)
     throwUserError(path + ": this " + what + " is over " + formatBytes(maxBytes) + ", the most LightLab reads");
   rejectNulBytes(text, path, what);
   return text;
 }
 
+namespace {
+
+// Advances (line, column) over text[0, end).
+void advance(const char* text, size_t end, int& line, int& column) {
+  for (size_t i = 0; i < end; ++i) {
+    if (text[i] == '\n') ++line, column = 1;
+    else ++column;
+  }
+}
+
+[[noreturn]] void throwNulByte(const std::string& file, int line, int column, const std::string& what) {
+  throwUserError(file, line, column,
+                 "a NUL byte (0x00): a " + what + " is text, and this one holds binary data from here on");
+}
+
+}  // namespace
+
 void rejectNulBytes(const std::string& text, const std::string& file, const std::string& what) {
   const size_t nul = text.find('\0');
   if (nul == std::string::npos) return;
   int line = 1, column = 1;
-  for (size_t i = 0; i < nul; ++i) {
-    if (text[i] == '\n') ++line, column = 1;
-    else ++column;
+  advance(text.data(), nul, line, column);
+  throwNulByte(file, line, column, what);
+}
+
+void checkTextFile(const std::string& path, const std::string& what, std::uintmax_t maxBytes) {
+  checkInputFile(path, what, maxBytes);
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throwUserError(path + ": cannot open " + what);
+  std::string block(1 << 20, '\0');
+  int line = 1, column = 1;
+  while (in) {
+    in.read(block.data(), static_cast<std::streamsize>(block.size()));
+    const auto n = static_cast<size_t>(in.gcount());
+    const auto* nul = static_cast<const char*>(std::memchr(block.data(), '\0', n));
+    if (nul) {
+      advance(block.data(), static_cast<size_t>(nul - block.data()), line, column);
+      throwNulByte(path, line, column, what);
+    }
+    advance(block.data(), n, line, column);
   }
-  throwUserError(file, line, column,
-                 "a NUL byte (0x00): a " + what + " is text, and this one holds binary data from here on");
+  if (in.bad()) throwUserError(path + ": cannot read " + what);
 }
 
 }  // namespace ll

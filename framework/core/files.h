@@ -27,14 +27,18 @@ inline constexpr std::uintmax_t kMaxImageFileBytes = 256ull << 20; // textures, 
 // "64 MB", "2.0 GB", "512 bytes": a size for messages.
 std::string formatBytes(std::uintmax_t bytes);
 
-// Throws UserError unless `path` names a regular file of at most `maxBytes`.
-// `what` names the kind of file in the message ("scene file").
-void checkInputFile(const std::string& path, const std::string& what, std::uintmax_t maxBytes);
+// Throws UserError unless `path` names a regular file of at most `maxBytes`;
+// returns its size. `what` names the kind of file in the message ("scene file").
+std::uintmax_t checkInputFile(const std::string& path, const std::string& what, std::uintmax_t maxBytes);
 
 // Throws UserError "file:line:col: a NUL byte ..." if `text` holds one: a text
 // file holds none, and a parser (nlohmann's among them) would silently stop
 // at it, accepting a valid file followed by binary data or zeros.
 void rejectNulBytes(const std::string& text, const std::string& file, const std::string& what);
+
+// checkInputFile, then rejectNulBytes over the file read in blocks, without
+// holding it: for text files another library parses (OBJ).
+void checkTextFile(const std::string& path, const std::string& what, std::uintmax_t maxBytes);
 
 // checkInputFile, then the whole file, then rejectNulBytes.
 std::string readTextFile(const std::string& path, const std::string& what,

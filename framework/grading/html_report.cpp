@@ -11,6 +11,7 @@
 
 #include "core/base64.h"
 #include "core/error.h"
+#include "core/markup.h"
 #include "grading/grade_reports.h"
 #include "grading/report_text.h"
 

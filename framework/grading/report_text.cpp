@@ -20,42 +20,6 @@ std::string formatNumber(double v, int decimals) {
   return s;
 }
 
-std::string escapeMarkup(const std::string& s, bool text) {
-  std::string out;
-  out.reserve(s.size());
-  for (char c : s) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      case '\'':
-        out += "&#39;";
-        break;
-      case '\n':
-        out += text ? "\n" : "&#10;";
-        break;
-      case '\r':
-        out += "&#13;";
-        break;
-      case '\t':
-        out += text ? "\t" : "&#9;";
-        break;
-      default:
-        if (static_cast<unsigned char>(c) >= 0x20) out += c;
-    }
-  }
-  return out;
-}
-
 void writeTextFile(const std::string& path, const std::string& text) {
   createParentDirectory(path);
   std::ofstream out(path, std::ios::binary);

@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <fstream>
 #include <set>
+#include <string>
 #include <thread>
 
 #include <gtest/gtest.h>
@@ -210,6 +212,45 @@ TEST(PaneRenderer, ALongRadiositySolveStopsWhenANewRequestArrives) {
   // factors again (a finished solve would be cached and go straight to its pass).
   const std::string again = waitForFormFactors(pane.submit(slow));
   EXPECT_EQ(again.rfind("form factors", 0), 0u) << again;
+}
+
+double residentMegabytes() {
+  std::ifstream status("/proc/self/status");
+  std::string key;
+  double kb = 0.0;
+  while (status >> key)
+    if (key == "VmRSS:" && status >> kb) break;
+  return kb / 1024.0;
+}
+
+// Fifty fast technique switches (a lecturer clicking through the list): the pane ends on the last
+// one's exact image, and memory does not keep what the cancelled requests built.
+TEST(PaneRenderer, FiftyFastSwitchesEndOnTheLastRequestWithFlatMemory) {
+  const auto scene = std::make_shared<const Scene>(loadScene(kScenes + "cornell_box.json"));
+  PaneRenderer pane;
+  const char* cycle[] = {"raycast", "whitted", "radiosity", "path", "blinn-phong"};
+  RenderRequest last;
+  double warm = 0.0;
+  for (int round = 0; round < 2; ++round) {  // the first round warms the caches (accelerator, patches)
+    for (int i = 0; i < 50; ++i) {
+      RenderRequest r = request(scene, 1, 2);
+      r.technique = cycle[i % 5];
+      r.techniqueParams = ParamSet("technique '" + r.technique + "'", findTechnique(r.technique).params);
+      last = r;
+      pane.submit(std::move(r));
+      std::this_thread::sleep_for(std::chrono::milliseconds(i % 3 == 0 ? 0 : 15));
+    }
+    waitFinished(pane);
+    if (round == 0) warm = residentMegabytes();
+  }
+  const PaneSnapshot s = pane.snapshot();
+  EXPECT_EQ(s.phase, PaneSnapshot::Phase::Done);
+  EXPECT_EQ(s.imageShows, last.technique);
+  ASSERT_TRUE(s.image);
+  EXPECT_EQ(s.image->pixels(), headless(last).pixels());
+  const double now = residentMegabytes();
+  std::printf("resident memory: %.0f MB after 50 switches, %.0f MB after 100\n", warm, now);
+  EXPECT_LT(now, warm + 100.0) << "memory grew by " << now - warm << " MB over 50 more switches";
 }
 
 // Radiosity on the 235k-triangle Cornell bunny (made by the build) once ignored a switch back to ray

@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "core/files.h"
+#include "core/utf8.h"
 
 namespace ll {
 
@@ -145,28 +146,6 @@ std::pair<int, int> lineColumn(const std::string& text, size_t offset) {
     }
   }
   return {line, col};
-}
-
-// The offset of the first byte at or after `from` that does not belong to a well-formed UTF-8
-// sequence (RFC 3629: no overlong forms, no surrogates, at most U+10FFFF), or npos.
-size_t firstInvalidUtf8(const std::string& s, size_t from) {
-  for (size_t i = from; i < s.size();) {
-    const auto c = static_cast<unsigned char>(s[i]);
-    size_t n = 0;
-    unsigned lo = 0x80, hi = 0xBF;  // the allowed range of the second byte
-    if (c < 0x80) n = 1;
-    else if (c >= 0xC2 && c <= 0xDF) n = 2;
-    else if (c >= 0xE0 && c <= 0xEF) n = 3, lo = c == 0xE0 ? 0xA0 : 0x80, hi = c == 0xED ? 0x9F : 0xBF;
-    else if (c >= 0xF0 && c <= 0xF4) n = 4, lo = c == 0xF0 ? 0x90 : 0x80, hi = c == 0xF4 ? 0x8F : 0xBF;
-    else return i;
-    for (size_t k = 1; k < n; ++k) {
-      if (i + k >= s.size()) return i;
-      const auto b = static_cast<unsigned char>(s[i + k]);
-      if (b < (k == 1 ? lo : 0x80) || b > (k == 1 ? hi : 0xBF)) return i;
-    }
-    i += n;
-  }
-  return std::string::npos;
 }
 
 }  // namespace

@@ -47,7 +47,7 @@ Material convert(const tinyobj::material_t& m, const std::string& baseDir) {
 
 Scene loadObjScene(const std::string& path) {
   // Checked whole before tinyobjloader reads it, which skips lines it does not know (binary data too).
-  (void)readTextFile(path, "OBJ scene", kMaxMeshFileBytes);
+  checkTextFile(path, "OBJ scene", kMaxMeshFileBytes);
   const std::string baseDir = fs::path(path).parent_path().string();
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;

@@ -52,6 +52,17 @@ lightlab_error_test(camera_up_parallel "up_parallel\\.json:2:3: camera up is par
                     render ${BAD_INPUT}/up_parallel.json -o ${OUT}/camera_up_parallel.png)
 lightlab_error_test(number_beyond_float "huge_number\\.json:5:75: scene\\.objects\\[0\\]\\.radius = 1e\\+39 is not a finite float \\(\\|x\\| <= 3\\.4e38\\)$"
                     render ${BAD_INPUT}/huge_number.json -o ${OUT}/number_beyond_float.png)
+# Issue 25: inputs that are too big, not text, or beyond the scene limits (the fuzzers' regression inputs).
+set(REGRESSIONS ${PROJECT_SOURCE_DIR}/tests/fuzz/regressions/scene_json)
+execute_process(COMMAND truncate -s 2G ${OUT}/two_gigabytes.json)  # sparse: no disk space
+lightlab_error_test(scene_file_too_big "two_gigabytes\\.json: this scene file is 2\\.0 GB; LightLab reads a scene file of at most 64 MB \\(is it the right file\\?\\)$"
+                    render ${OUT}/two_gigabytes.json -o ${OUT}/scene_file_too_big.png)
+lightlab_error_test(nul_bytes_after_the_scene "trailing_nul_bytes\\.json:6:1: a NUL byte \\(0x00\\): a scene file is text, and this one holds binary data from here on$"
+                    render ${REGRESSIONS}/trailing_nul_bytes.json -o ${OUT}/nul_bytes_after_the_scene.png)
+lightlab_error_test(latin1_scene "latin1_description\\.json:2:19: malformed JSON: a byte that is not UTF-8 \\(the file was saved in another encoding, such as Latin-1: save it as UTF-8\\)$"
+                    render ${REGRESSIONS}/latin1_description.json -o ${OUT}/latin1_scene.png)
+lightlab_error_test(overflow "sphere_at_1e38\\.json:4:13: object 'sphere 0' reaches 1e\\+38 scene units: overflow \\(allowed: within \\+-1e\\+08 units, where float arithmetic stays exact enough; scale the scene down\\)$"
+                    render ${REGRESSIONS}/sphere_at_1e38.json -o ${OUT}/overflow.png)
 lightlab_error_test(obj_bad_face_index "obj_bad_index\\.obj: face 1 uses vertex 4, but the file has 3$"
                     render ${SCENES}/tests/bad/obj_bad_index.obj -o ${OUT}/obj_bad_face_index.png)
 
