@@ -286,5 +286,32 @@ TEST(PaneRenderer, SwitchingAwayFromRadiosityOnTheBigBunnyTakesEffectWithinTwoSe
   }
 }
 
+// The KD-tree build of the 235k bunny takes seconds (issue 29 makes it faster); a pane switched to
+// another accelerator during it does not wait for it to end.
+TEST(PaneRenderer, SwitchingAwayDuringAKdTreeBuildOnTheBigBunnyTakesEffectWithinTwoSeconds) {
+  const auto scene = std::make_shared<const Scene>(
+      loadScene(std::string(LIGHTLAB_BUILD_DATA_DIR) + "/scenes/cornell_bunny_235k.json"));
+  PaneRenderer pane;
+  RenderRequest kd = request(scene, 1, 1);
+  kd.accelerator = "kdtree";
+  kd.accelParams = ParamSet("accelerator 'kdtree'", findAccelerator("kdtree").params);
+  const uint64_t id = pane.submit(kd);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (!(pane.snapshot().request == id && pane.snapshot().phaseName.rfind("kd-tree build", 0) == 0) &&
+         std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  ASSERT_EQ(pane.snapshot().phaseName.rfind("kd-tree build", 0), 0u) << pane.snapshot().phaseName;
+  RenderRequest bvh = request(scene, 1, 1);
+  bvh.accelerator = "bvh";
+  bvh.accelParams = ParamSet("accelerator 'bvh'", findAccelerator("bvh").params);
+  const auto switched = std::chrono::steady_clock::now();
+  pane.submit(bvh);
+  waitFinished(pane);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - switched).count();
+  std::printf("switched away during the kd-tree build: the BVH image shown %.2f s later\n", seconds);
+  EXPECT_EQ(pane.snapshot().phase, PaneSnapshot::Phase::Done);
+  EXPECT_LT(seconds, 2.0);
+}
+
 }  // namespace
 }  // namespace ll::gui
