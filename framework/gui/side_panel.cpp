@@ -85,7 +85,11 @@ void cameraSection(AppState& app) {
       app.cameraChanged = true;
     }
   }
-  if (!refused.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "not applied: %s", refused.c_str());
+  if (!refused.empty()) {  // wrapped: at UI scale 2 the reason is wider than the panel
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.35f, 1.0f));
+    ImGui::TextWrapped("not applied: %s", refused.c_str());
+    ImGui::PopStyleColor();
+  }
   if (ImGui::Button("Frame scene")) frameScene(app), refused.clear();
   recordWidget(app, "camera.frame");
   ImGui::SameLine();
