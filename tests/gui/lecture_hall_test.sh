@@ -75,10 +75,9 @@ echo "ok: the plot shows one falling curve per pane"
 # 3. Ray casting -> radiosity: the placeholder with phase and progress at once, never the old picture.
 start --preset "$HERE/radiosity_switch.json"
 until_shot rc "$done_all and j['panes'][0]['image_shows'] == 'raycast'"
-click sw1 A.technique
-until_shot sw2 "'A.technique.list' in j['widgets']"
+open_combo sw2 A.technique
 reveal sw3 A.technique:radiosity A.technique.list
-xdotool mousemove $(centre sw3 A.technique:radiosity) sleep 0.2 click 1
+press $(centre sw3 A.technique:radiosity)
 switched=$SECONDS
 n=0
 # Every screenshot from the click on: never the ray-cast picture; the first one reporting on the new

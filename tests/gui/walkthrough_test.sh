@@ -36,8 +36,7 @@ echo "ok: the Cornell box rendered in both panes"
 
 # 2. Open the bunny from the scene list: click the combo, then the file (scrolling the list if needed).
 starts=$(field s1 starts)
-click s2a scene.files
-until_shot s2b "'scene.files.list' in j['widgets']"
+open_combo s2b scene.files
 bunny=$(q s2b.json "([k for k in j['widgets'] if k == 'scene.file:$ROOT/data/scenes/bunny.json'] + [k for k in j['widgets'] if k.startswith('scene.file:') and k.endswith('/data/scenes/bunny.json')] + [''])[0]")
 [ -n "$bunny" ] || fail "the scene list has no data/scenes/bunny.json"
 click s2c "$bunny" 0.5 scene.files.list
@@ -47,8 +46,7 @@ until_shot s2 "j['scene'].endswith('/data/scenes/bunny.json') and all(p['starts'
 echo "ok: the bunny was opened from the scene list and rendered in both panes"
 
 # 3. Pane B gets another technique through its combo (whitted or blinn-phong if built, else any other).
-click s3a B.technique
-until_shot s3b "'B.technique.list' in j['widgets']"
+open_combo s3b B.technique
 tech=$(q s3b.json "([t for t in ('whitted', 'blinn-phong') if 'B.technique:' + t in j['widgets']] + [k.split(':', 1)[1] for k in j['widgets'] if k.startswith('B.technique:') and k != 'B.technique:raycast'] + [''])[0]")
 if [ -n "$tech" ]; then
   starts=$(field s3b starts)
@@ -74,7 +72,7 @@ echo "ok: the wipe line was dragged to $(q s4.json "round(j['compare']['wipe'], 
 until_shot s5w "$done_both"
 reveal s5a A.param.light_samples
 before=$(q s5a.json "[j['panes'][0][k] for k in ('starts', 'image_version')]")
-xdotool mousemove $(centre s5a A.param.light_samples 0.6) sleep 0.2 click 1
+press $(centre s5a A.param.light_samples 0.6)
 until_shot s5 "int(j['panes'][0]['params']['light_samples']) > 16 and j['panes'][0]['starts'] > $before[0] and j['panes'][0]['image_version'] > $before[1] and $done_both"
 echo "ok: light_samples = $(q s5.json "j['panes'][0]['params']['light_samples']"), pane A restarted" \
   "(starts $(q s5a.json "j['panes'][0]['starts']") -> $(q s5.json "j['panes'][0]['starts']")," \

@@ -6,7 +6,9 @@
 #   until_shot NAME COND [S]  screenshots until COND holds on the sidecar (S seconds, 120)
 #   key KEYSYM              one key press, the mouse parked in the corner
 #   reveal NAME WIDGET [BOX]  scroll the side panel (or BOX) until WIDGET is wholly in view
-#   click NAME WIDGET [FRACTION-ACROSS] [BOX]  reveal, then click the widget
+#   press X Y               the left button held 0.15 s (a click that no frame can miss)
+#   click NAME WIDGET [FRACTION-ACROSS] [BOX]  reveal, then press the widget
+#   open_combo NAME WIDGET  click a combo until its list shows (three tries)
 #   $done_both              both panes finished all passes, and the pixels on screen are
 #                           their last image (display bytes are encoded in the background,
 #                           so the sidecar's phase can run ahead of the texture)
@@ -56,7 +58,24 @@ reveal() {
   fail "$1: could not scroll '$2' into view"
 }
 centre() { q "$1.json" "' '.join(str(int(v)) for v in (j['widgets']['$2'][0] + j['widgets']['$2'][2] * ${3:-0.5}, j['widgets']['$2'][1] + j['widgets']['$2'][3] / 2))"; }
-click() {  # click NAME WIDGET [FRACTION-ACROSS] [BOX]: reveal the widget, then click it
+# press X Y: the left button down, held 0.15 s, then up. A press and release sent at once (xdotool
+# click) can fall within one GUI frame on a loaded machine, and the frame sees no click at all.
+press() { xdotool mousemove "$1" "$2" sleep 0.2 mousedown 1 sleep 0.15 mouseup 1; }
+click() {  # click NAME WIDGET [FRACTION-ACROSS] [BOX]: reveal the widget, then press it
   reveal "$1" "$2" "${4:-panel}"
-  xdotool mousemove $(centre "$1" "$2" "${3:-0.5}") sleep 0.2 click 1
+  press $(centre "$1" "$2" "${3:-0.5}")
+}
+# open_combo NAME WIDGET: click the combo until its list shows (kept as NAME.*): under a loaded
+# CI machine a click on a combo was once not taken up; a user would click again too.
+open_combo() {
+  local attempt k
+  for attempt in 1 2 3; do
+    click "$1_click" "$2"
+    for k in $(seq 10); do
+      shot "$1"
+      [ "$(q "$1.json" "'$2.list' in j['widgets']")" = True ] && return 0
+      sleep 0.3
+    done
+  done
+  fail "$1: the list of '$2' never opened (three clicks)"
 }
