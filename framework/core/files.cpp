@@ -57,14 +57,11 @@ std::string readTextFile(const std::string& path, const std::string& what, std::
   const std::uintmax_t size = checkInputFile(path, what, maxBytes);
   std::ifstream in(path, std::ios::binary);
   if (!in) throwUserError(path + ": cannot open " + what);
-  // The size it had when checked, plus one byte to notice a file that grew past the limit since.
+  // The size it had when checked; a file written to meanwhile is reread by the watcher once saved.
   std::string text(static_cast<size_t>(size), '\0');
   in.read(text.data(), static_cast<std::streamsize>(text.size()));
   text.resize(static_cast<size_t>(in.gcount()));
   if (in.bad()) throwUserError(path + ": cannot read " + what);
-  for (char c; text.size() <= maxBytes && in.get(c);) text += c;
-  if (text.size() > maxBytes)
-    throwUserError(path + ": this " + what + " is over " + formatBytes(maxBytes) + ", the most LightLab reads");
   rejectNulBytes(text, path, what);
   return text;
 }

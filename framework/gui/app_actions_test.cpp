@@ -57,6 +57,13 @@ fs::path copyOfScene(const std::string& folder) {
   return file;
 }
 
+// Small panes (makeSmall) on the scene at `file`, loaded.
+void openSmall(AppState& app, const fs::path& file) {
+  makeSmall(app);
+  openScene(app, file.string());
+  waitForSceneLoad(app);
+}
+
 // What the GUI does every frame, once the watch's half second has passed: look at the file, finish a load.
 void lookAgain(AppState& app) {
   std::this_thread::sleep_for(std::chrono::milliseconds(600));
@@ -95,9 +102,7 @@ TEST(AppActions, ABrokenSceneKeepsThePreviousOneAndSaysWhere) {
 TEST(AppActions, ChangingTheSceneFileOnDiskReloadsItKeepingTheView) {
   const fs::path file = copyOfScene("lightlab_reload_test");
   AppState app;
-  makeSmall(app);
-  openScene(app, file.string());
-  waitForSceneLoad(app);
+  openSmall(app, file);
   ASSERT_TRUE(app.scene);
   const uint64_t version = app.sceneVersion;
   app.camera.eye += Vec3(0.1f, 0, 0);  // the user moved the view
@@ -142,9 +147,7 @@ TEST(AppActions, ADeletedSceneFileIsSaidOnceAndReloadsWhenBack) {
   const fs::path file = copyOfScene("lightlab_deleted_scene_test");
   const fs::path dir = file.parent_path();
   AppState app;
-  makeSmall(app);
-  openScene(app, file.string());
-  waitForSceneLoad(app);
+  openSmall(app, file);
   ASSERT_TRUE(app.scene);
   const uint64_t version = app.sceneVersion;
   fs::rename(file, dir / "moved.json");

@@ -119,6 +119,7 @@ struct AppState {
   std::filesystem::file_time_type sceneWriteTime{};    // of the file as the shown scene was read
   std::filesystem::file_time_type loadingWriteTime{};  // of the file being loaded, taken before reading it
   bool sceneFileMissing = false;                       // the watched file is gone (said once)
+  std::string cameraRefused;  // why the last typed camera value was not applied ("" = it was)
   bool autoReload = true;
   std::chrono::steady_clock::time_point lastWatch;  // when the scene file's time was last checked
   std::string loadingPath;                          // non-empty while a load runs

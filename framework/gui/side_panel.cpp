@@ -77,7 +77,7 @@ void cameraSection(AppState& app) {
   edited |= ImGui::DragFloat3("up", &c.up.x, 0.01f, -1, 1, "%.3f");
   edited |= ImGui::SliderFloat("fov y (deg)", &c.fovYDeg, 1.0f, 150.0f, "%.1f");
   // A typed or dragged value that would make the camera unusable is not applied; the reason shows.
-  static std::string refused;
+  std::string& refused = app.cameraRefused;
   if (edited) {
     refused = cameraProblem(c);
     if (refused.empty()) {
