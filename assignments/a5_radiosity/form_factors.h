@@ -6,10 +6,14 @@
 //                half-space, times the fraction of visibility rays from
 //                i's centre to points on j that arrive;
 //   hemicube:    a hemicube of res x res cells on the top face around i's
-//                centre, each cell's delta form factor given to the patch its
-//                centre ray hits first (cast through the accelerator);
-//   montecarlo:  area-to-area: N random point pairs (x on i, y on j),
-//                F_ij = A_j/N sum cos_i cos_j V(x, y) / (pi r^2).
+//                centre, turned about i's normal by a random angle per
+//                patch, each cell's delta form factor (normalised: they sum
+//                to 1) given to the patch its centre ray hits first (cast
+//                through the accelerator);
+//   montecarlo:  area-to-area, finite variance next to shared edges: N
+//                stratified points x on i, at each the point-to-polygon
+//                form factor (A5.1) to j minus a one-ray estimate of the
+//                part of it that is hidden (see monteCarloRow).
 // Every visibility test goes through `accel` (built over mesh.geometry).
 #pragma once
 
@@ -30,8 +34,8 @@ struct FormFactorSettings {
   FormFactorMethod method = FormFactorMethod::Hemicube;
   int hemicubeResolution = 32;  // cells along the top face's side
   int visibilitySamples = 1;    // analytic: rays from i's centre to points on j
-  int monteCarloSamples = 16;   // montecarlo: point pairs per patch pair
-  uint64_t seed = 0;
+  int monteCarloSamples = 16;   // montecarlo: points on i (and visibility rays) per patch pair
+  uint64_t seed = 0;            // montecarlo's points, the hemicubes' turns
 };
 
 // Row i: the patches j with F_ij > 0 and their F_ij (sorted by j).
@@ -66,7 +70,8 @@ struct FormFactorEntry {
 };
 class HemicubeRows {
  public:
-  HemicubeRows(const PatchMesh& mesh, const Accelerator& accel, int resolution);
+  // seed: the hemicubes' random turns about the normals (as computeFormFactors with that seed).
+  HemicubeRows(const PatchMesh& mesh, const Accelerator& accel, int resolution, uint64_t seed = 0);
   ~HemicubeRows();
   // F_ij for every patch j the hemicube of patch i sees, sorted by j.
   std::vector<FormFactorEntry> row(uint32_t i);
@@ -78,6 +83,7 @@ class HemicubeRows {
   struct Cells;
   std::unique_ptr<Cells> cells_;
   std::vector<float> accumulator_;
+  uint64_t seed_ = 0;
   uint64_t rays_ = 0;
 };
 

@@ -1,6 +1,7 @@
 #include "radiosity_scene.h"
 
 #include <chrono>
+#include <cstdio>
 #include <cstring>
 #include <list>
 #include <mutex>
@@ -158,6 +159,9 @@ std::shared_ptr<const SolvedRadiosity> computeSolution(std::shared_ptr<const Pat
         bar.update(std::clamp(std::log(first / s.residual) / std::log(first / r.solver.tolerance), 0.0, 1.0));
     });
   }
+  if (!out->solution.failure.empty())  // once per solve (solves are cached), quiet or not: the picture is wrong
+    std::fprintf(stderr, "lightlab: radiosity (%s, %zu patches) NOT converged: %s\n", methodName(r.solver.method).c_str(),
+                 out->mesh().patches.size(), out->solution.failure.c_str());
   const PatchMesh& mesh = out->mesh();
   const std::vector<Rgb>& b = out->solution.radiosity;
   switch (r.show) {
@@ -177,6 +181,8 @@ std::shared_ptr<const SolvedRadiosity> computeSolution(std::shared_ptr<const Pat
       break;
     }
   }
+  for (Rgb& shown : out->shown)
+    if (!isFinite(shown)) shown = Rgb(0.0f);  // (bounces of a system with non-finite input; the failure says so)
   out->vertexShown.assign(mesh.positions.size(), Rgb(0.0f));
   for (size_t v = 0; v < out->vertexShown.size(); ++v) {
     float area = 0.0f;

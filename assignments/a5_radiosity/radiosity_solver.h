@@ -8,8 +8,15 @@
 //                 (A5.3); N shots count as one iteration in the history, and
 //                 its residual is the unshot power over the emitted power.
 // The residual is max_i |E_i + rho_i (F B)_i - B_i| / max_i E_i (largest
-// over r, g, b): iterative solvers stop when it is below the tolerance, or at
-// the iteration cap.
+// over r, g, b; NaN if any B is): iterative solvers stop when it is below the
+// tolerance, or at the iteration cap.
+//
+// A solve that fails says why in one line (Solution::failure): input that is
+// not finite, a radiosity that became NaN or Inf, a residual that grows
+// (rho F is not a contraction: a row of it sums to 1 or more), a singular or
+// near-singular system (direct), negative radiosities (direct, on a system
+// that is not a contraction), or the iteration cap. No NaN or Inf is ever
+// returned: such values become 0 and the failure names them.
 #pragma once
 
 #include <functional>
@@ -41,6 +48,8 @@ struct Solution {
   Rgb ambient{0.0f};           // southwell: the ambient estimate of the unshot part, for display
   std::vector<SolverStep> history;
   bool converged = false;
+  std::string failure;  // why not converged, one line (empty when converged)
+  double largestRowGain = 0.0;  // max over patches and channels of rho_i sum_j F_ij (< 1: a contraction)
   double seconds = 0.0;
 };
 

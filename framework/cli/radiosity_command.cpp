@@ -139,6 +139,8 @@ Command addRadiosityCommand(CLI::App& app, const GlobalOptions& global) {
         {"solver",
          {{"method", a5::methodName(settings.solver.method)},
           {"converged", sol.converged},
+          {"failure", sol.failure},
+          {"largest_row_sum_of_rho_f", sol.largestRowGain},
           {"iterations", iterations},
           {"residual", finalResidual},
           {"seconds", sol.seconds},

@@ -20,6 +20,7 @@ using Mat4 = glm::mat4;
 using Rgb = glm::vec3;  // linear RGB radiance or reflectance, never sRGB-encoded
 
 constexpr float kPi = 3.14159265358979323846f;
+constexpr double kPiD = 3.14159265358979323846;
 constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
 // v's components as an array, for indexing by a run-time axis in hot loops:
