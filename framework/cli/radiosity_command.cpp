@@ -3,8 +3,10 @@
 // B = E + rho F B (the technique `radiosity`'s parameters choose how), then
 // prints a summary: patches, times, form-factor diagnostics (row sums,
 // reciprocity), the solver's iterations and residual, the energy balance.
-// --json writes every patch and the solver's history; --plot draws the
-// residual history (log scale) as an SVG.
+// --json writes every patch and the solver's history (and, up to 500
+// patches, the form-factor matrix and the bounce terms K^n E until they fall
+// below 1e-4 of E); --plot draws the residual history (log scale) as an SVG.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -27,6 +29,10 @@ struct RadiosityOptions {
 };
 
 nlohmann::json vec(const Vec3& v) { return {v.x, v.y, v.z}; }
+
+// --json writes the form-factor matrix and the bounce terms up to this many patches.
+constexpr size_t kMatrixMaxPatches = 500;
+constexpr int kMaxBounceTerms = 64;
 
 // The residual history as a small SVG plot: log10(residual) against iteration.
 void writePlot(const a5::Solution& s, const std::string& title, const std::string& path) {
@@ -122,7 +128,7 @@ Command addRadiosityCommand(CLI::App& app, const GlobalOptions& global) {
     nlohmann::json history = nlohmann::json::array();
     for (const a5::SolverStep& step : sol.history)
       history.push_back({{"iteration", step.iteration}, {"residual", step.residual}, {"seconds", step.seconds}});
-    const nlohmann::json out = {
+    nlohmann::json out = {
         {"scene", o->scene},
         {"parameters", s.techniqueParams.toJson()},
         {"mesh",
@@ -149,6 +155,34 @@ Command addRadiosityCommand(CLI::App& app, const GlobalOptions& global) {
          {{"emitted", solved->energy.emitted}, {"absorbed", solved->energy.absorbed}, {"escaped", solved->energy.escaped}}},
         {"missing_tasks", solved->missingTasks},
         {"patches", patches}};
+    if (solved->mesh().patches.size() <= kMatrixMaxPatches) {
+      // What a user can check by hand on a small system: F itself (sparse rows), and the
+      // Neumann series' terms K^n E that show=bounce displays, until they fade.
+      const a5::FormFactors& f = solved->f();
+      nlohmann::json rows = nlohmann::json::array();
+      for (uint32_t i = 0; i < f.size(); ++i) {
+        nlohmann::json row = nlohmann::json::array();
+        for (uint32_t k = f.rowStart[i]; k < f.rowStart[i + 1]; ++k) row.push_back({f.column[k], f.value[k]});
+        rows.push_back(row);
+      }
+      out["form_factors"]["matrix"] = {{"format", "row i: [[j, F_ij], ...] for F_ij > 0"}, {"rows", rows}};
+      nlohmann::json bounces = nlohmann::json::array();
+      std::vector<Rgb> term = a5::bounce(solved->system(), 0);
+      float first = 0.0f;
+      for (const Rgb& e : term) first = std::max(first, maxComponent(e));
+      for (int k = 0; k <= kMaxBounceTerms; ++k) {
+        if (k > 0) term = a5::bounce(solved->system(), k);
+        float largest = 0.0f;
+        nlohmann::json values = nlohmann::json::array();
+        for (const Rgb& b : term) {
+          values.push_back(vec(b));
+          largest = std::max(largest, maxComponent(b));
+        }
+        bounces.push_back({{"bounce", k}, {"largest", largest}, {"radiosity", values}});
+        if (!(largest > 1e-4f * first)) break;
+      }
+      out["bounces"] = bounces;
+    }
     createParentDirectory(o->json);
     std::ofstream file(o->json);
     if (!file) throwUserError(o->json + ": cannot write");
