@@ -211,6 +211,9 @@ TEST(A5_2_Solvers, AllSolversAgreeWithTheDirectSolveOnTheCornellBox) {
   a5::RadiositySettings r = quickVisibility();
   r.patchSize = 0.12f;
   r.formFactors.hemicubeResolution = 16;
+  // Uncut: the cuts along the lamp and the blocks' footprints leave narrow patches whose coarse hemicube
+  // rows are far from reciprocal (Southwell's 3e-2 below became 5e-2); this compares the solvers.
+  r.discontinuityMeshing = false;
   r.solver.method = a5::SolverMethod::Direct;
   const auto direct = a5::solveScene(scene, r);
   ASSERT_GT(direct->mesh().patches.size(), 300u);

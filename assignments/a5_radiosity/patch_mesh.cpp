@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <map>
+#include <tuple>
 
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 
 #include "core/phase_progress.h"
+#include "discontinuity_cuts.h"
 
 namespace ll::a5 {
 
@@ -93,10 +95,52 @@ float PatchMesh::totalArea() const {
 
 namespace {
 
-// Appends object o's faces of `mesh` as patches (and its vertices).
-void appendObject(const Scene& scene, uint32_t o, const OmMesh& mesh, PatchMesh& out) {
+// Where object o was cut (its patches from firstPatch on, its vertices from
+// firstVertex on): a corner on an outline segment (not on the rest of its
+// line: the radiosity is continuous there), shared by patches on both sides
+// of it, gets one copy per side (same position: the mesh stays crack-free
+// and its edges conforming), so interpolated corner radiosities do not blend
+// across the jump (the dark patches hidden under the lamp gave it a halo).
+void separateAlongCuts(PatchMesh& out, uint32_t firstPatch, uint32_t firstVertex, const std::vector<CutLine>& lines,
+                       const Vec3& normal) {
+  if (lines.empty()) return;
+  // Bit l: patch centre c is on the positive side of line l, where corner x lies on segment l.
+  const auto side = [&](const Vec3& x, const Vec3& c) {
+    uint64_t code = 0;
+    for (size_t l = 0; l < lines.size(); ++l) {
+      const CutLine& line = lines[l];
+      const Vec3 across = glm::normalize(glm::cross(normal, line.direction)), off = x - line.point;
+      const float along = glm::dot(off, line.direction), tolerance = 1e-4f * line.length;
+      if (std::abs(glm::dot(across, off)) > tolerance || along < -tolerance || along > line.length + tolerance) continue;
+      if (glm::dot(across, c - line.point) > 0.0f) code |= uint64_t{1} << l;
+      code |= uint64_t{1} << (32 + l);  // (on segment l at all: both sides differ from "on none")
+    }
+    return code;
+  };
+  std::map<std::pair<uint32_t, uint64_t>, uint32_t> copyOf;  // (vertex, side) -> its index for that side
+  std::vector<uint64_t> firstSide(out.positions.size() - firstVertex, ~uint64_t{0});
+  for (size_t i = firstPatch; i < out.patches.size(); ++i)
+    for (int k = 0; k < 3; ++k) {
+      uint32_t& v = out.patches[i].vertices[k];
+      const uint64_t here = side(out.positions[v], out.patches[i].centre);
+      uint64_t& owner = firstSide[v - firstVertex];
+      if (owner == ~uint64_t{0}) owner = here;
+      if (owner == here) continue;
+      auto it = copyOf.find({v, here});
+      if (it == copyOf.end()) {
+        it = copyOf.emplace(std::make_pair(v, here), static_cast<uint32_t>(out.positions.size())).first;
+        out.positions.push_back(out.positions[v]);
+      }
+      v = it->second;
+    }
+}
+
+// Appends object o's faces of `mesh` as patches (and its vertices), separated along `lines`.
+void appendObject(const Scene& scene, uint32_t o, const OmMesh& mesh, PatchMesh& out,
+                  const std::vector<CutLine>& lines = {}) {
   const Material& m = scene.materials[scene.objects[o].material];
   const auto base = static_cast<uint32_t>(out.positions.size());
+  const auto firstPatch = static_cast<uint32_t>(out.patches.size());
   for (const auto v : mesh.vertices()) out.positions.push_back(fromOm(mesh.point(v)));
   for (const auto f : mesh.faces()) {
     glm::uvec3 idx;
@@ -116,6 +160,8 @@ void appendObject(const Scene& scene, uint32_t o, const OmMesh& mesh, PatchMesh&
     if (m.texture.kind != Texture::Kind::None) p.reflectance = glm::clamp(m.diffuse(Vec2(0.5f)), Rgb(0.0f), Rgb(1.0f));
     out.patches.push_back(p);
   }
+  if (!lines.empty() && out.patches.size() > firstPatch)
+    separateAlongCuts(out, firstPatch, base, lines, out.patches[firstPatch].normal);
 }
 
 // The Geometry view and the vertex -> patches table of `out`'s patches.
@@ -132,17 +178,48 @@ void finish(PatchMesh& out) {
   }
 }
 
+// Object o's triangles cut along `lines` (discontinuity_cuts.h), into `mesh`
+// with corners shared by position (the cuts made them as floats).
+void addCutTriangles(const Scene& scene, const SceneObject& object, const std::vector<CutLine>& lines, float snap,
+                     OmMesh& mesh) {
+  const Geometry& g = scene.geometry;
+  std::vector<Triangle3> triangles;
+  for (uint32_t prim = object.firstPrim; prim < object.firstPrim + object.primCount; ++prim) {
+    const glm::uvec3& t = g.triangles[prim];
+    if (glm::length(glm::cross(g.positions[t.y] - g.positions[t.x], g.positions[t.z] - g.positions[t.x])) > 0.0f)
+      triangles.push_back({g.positions[t.x], g.positions[t.y], g.positions[t.z]});
+  }
+  std::map<std::tuple<float, float, float>, OmMesh::VertexHandle> vertexAt;
+  const auto handle = [&](const Vec3& v) {
+    auto it = vertexAt.find({v.x, v.y, v.z});
+    if (it == vertexAt.end()) it = vertexAt.emplace(std::make_tuple(v.x, v.y, v.z), mesh.add_vertex(toOm(v))).first;
+    return it->second;
+  };
+  for (const Triangle3& t : cutTriangles(triangles, lines, snap)) {
+    const OmMesh::VertexHandle a = handle(t[0]), b = handle(t[1]), c = handle(t[2]);
+    if (!mesh.add_face(a, b, c).is_valid())
+      mesh.add_face(mesh.add_vertex(mesh.point(a)), mesh.add_vertex(mesh.point(b)), mesh.add_vertex(mesh.point(c)));
+  }
+}
+
 }  // namespace
 
-PatchMesh buildPatchMesh(const Scene& scene, float maxEdge, int sphereSegments) {
+PatchMesh buildPatchMesh(const Scene& scene, float maxEdge, int sphereSegments, bool cutAlongContacts) {
   PatchMesh out;
+  const float diagonal = scene.geometry.sceneBounds().diagonal();
   for (uint32_t o = 0; o < scene.objects.size(); ++o) {
     // Object by object (a pane's newer request cancels here: the report throws).
     reportPhase("patch mesh", static_cast<double>(o) / static_cast<double>(scene.objects.size()));
     OmMesh mesh;
-    addObjectTriangles(scene, scene.objects[o], sphereSegments, mesh);
+    const std::vector<CutLine> lines =
+        cutAlongContacts ? contactLines(scene, o, kContactTolerance * diagonal) : std::vector<CutLine>{};
+    if (lines.empty())
+      addObjectTriangles(scene, scene.objects[o], sphereSegments, mesh);
+    else
+      addCutTriangles(scene, scene.objects[o], lines, 1e-5f * diagonal, mesh);
     splitLongEdges(mesh, maxEdge);
-    appendObject(scene, o, mesh, out);
+    appendObject(scene, o, mesh, out, lines);
+    out.cuts.push_back(lines);
   }
   finish(out);
   return out;
@@ -154,15 +231,16 @@ PatchMesh refinePatchMesh(const Scene& scene, const PatchMesh& mesh, const std::
     reportPhase("patch mesh", static_cast<double>(o) / static_cast<double>(scene.objects.size()));
     // The object's patches back into an OpenMesh mesh (they share their vertices).
     OmMesh m;
-    std::map<uint32_t, OmMesh::VertexHandle> vertexOf;
+    std::map<std::tuple<float, float, float>, OmMesh::VertexHandle> vertexOf;  // by position: copies along cuts weld
     std::vector<std::pair<OmMesh::FaceHandle, bool>> faces;
     for (uint32_t i = 0; i < mesh.patches.size(); ++i) {
       const Patch& p = mesh.patches[i];
       if (p.object != o) continue;
       OmMesh::VertexHandle h[3];
       for (int k = 0; k < 3; ++k) {
-        auto it = vertexOf.find(p.vertices[k]);
-        if (it == vertexOf.end()) it = vertexOf.emplace(p.vertices[k], m.add_vertex(toOm(mesh.positions[p.vertices[k]]))).first;
+        const Vec3& x = mesh.positions[p.vertices[k]];
+        auto it = vertexOf.find({x.x, x.y, x.z});
+        if (it == vertexOf.end()) it = vertexOf.emplace(std::make_tuple(x.x, x.y, x.z), m.add_vertex(toOm(x))).first;
         h[k] = it->second;
       }
       OmMesh::FaceHandle f = m.add_face(h[0], h[1], h[2]);
@@ -189,7 +267,9 @@ PatchMesh refinePatchMesh(const Scene& scene, const PatchMesh& mesh, const std::
       const auto h = m.halfedge_handle(e, 0);
       m.split(e, 0.5f * (m.point(m.from_vertex_handle(h)) + m.point(m.to_vertex_handle(h))));
     }
-    appendObject(scene, o, m, out);
+    const std::vector<CutLine> lines = o < mesh.cuts.size() ? mesh.cuts[o] : std::vector<CutLine>{};
+    appendObject(scene, o, m, out, lines);
+    out.cuts.push_back(lines);
   }
   finish(out);
   return out;

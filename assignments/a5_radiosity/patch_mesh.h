@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/math.h"
+#include "discontinuity_cuts.h"
 #include "scene/geometry.h"
 #include "scene/scene.h"
 
@@ -33,14 +34,20 @@ struct PatchMesh {
   // id), for accelerators: visibility rays and display.
   Geometry geometry;
   // Per vertex: the patches around it (for interpolated vertex radiosities).
+  // A corner on a discontinuity line has one vertex per side (same position).
   std::vector<std::vector<uint32_t>> vertexPatches;
+  std::vector<std::vector<CutLine>> cuts;  // per object: the lines it was cut along (discontinuity_cuts.h)
   float totalArea() const;
 };
 
 // Meshes `scene` into patches no longer than maxEdge (scene units) along any
-// edge; spheres become `sphereSegments` x segments/2 quads first.
-// Precondition: maxEdge > 0.
-PatchMesh buildPatchMesh(const Scene& scene, float maxEdge, int sphereSegments = 24);
+// edge; spheres become `sphereSegments` x segments/2 quads first. With
+// cutAlongContacts, planar objects are first cut along the outlines of the
+// planar objects lying on them, within kContactTolerance of the scene's
+// diagonal (discontinuity_cuts.h: the lamp's outline on the ceiling, the
+// blocks' footprints on the floor). Precondition: maxEdge > 0.
+constexpr float kContactTolerance = 1e-3f;
+PatchMesh buildPatchMesh(const Scene& scene, float maxEdge, int sphereSegments = 24, bool cutAlongContacts = false);
 
 // Adaptive refinement: splits the longest edge of every patch i with
 // split[i] != 0 (and so the patch across that edge: the mesh stays

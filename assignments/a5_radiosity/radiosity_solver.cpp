@@ -92,6 +92,7 @@ std::string methodName(SolverMethod m) {
     case SolverMethod::Jacobi: return "jacobi";
     case SolverMethod::GaussSeidel: return "gauss-seidel";
     case SolverMethod::Southwell: return "southwell";
+    case SolverMethod::Hierarchical: return "hierarchical";
   }
   return "";
 }
@@ -189,6 +190,8 @@ Solution solveRadiosity(const RadiositySystem& s, const SolverSettings& settings
                   number(r) + " is above the tolerance " + number(settings.tolerance) + contraction;
   };
   switch (settings.method) {
+    case SolverMethod::Hierarchical:
+      throwUserError("solver 'hierarchical' solves its own elements (solveScene), not a given matrix");
     case SolverMethod::Direct: {
       double rcond = 1.0;
       out.radiosity = directSolve(s, rcond);

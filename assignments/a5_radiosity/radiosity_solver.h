@@ -27,7 +27,8 @@
 
 namespace ll::a5 {
 
-enum class SolverMethod { Direct, Jacobi, GaussSeidel, Southwell };
+// Hierarchical is solved by hierarchical.h on elements of its own (radiosity_scene.cpp), not by solveRadiosity.
+enum class SolverMethod { Direct, Jacobi, GaussSeidel, Southwell, Hierarchical };
 constexpr size_t kDirectMaxPatches = 3000;
 
 struct SolverSettings {

@@ -112,6 +112,9 @@ std::vector<ParamDecl> radiosityParams() {
   return {
       ParamDecl::real("patch_size", 0.04, 0.002, 1.0,
                       "longest patch edge, as a fraction of the scene's bounding-box diagonal"),
+      ParamDecl::boolean("discontinuity_meshing", true,
+                         "cut flat surfaces along the outlines of what lies on them (the lamp on the ceiling, "
+                         "the blocks on the floor) before meshing, so no patch straddles the jump"),
       ParamDecl::integer("adaptive_passes", 0, 0, 8,
                          "adaptive refinement: rounds of solving and splitting patches whose radiosity differs "
                          "from a neighbour's by more than adaptive_threshold"),
@@ -123,9 +126,14 @@ std::vector<ParamDecl> radiosityParams() {
       ParamDecl::integer("hemicube_res", 32, 4, 512, "hemicube cells along the top face's side"),
       ParamDecl::integer("visibility_samples", 1, 1, 64, "analytic: visibility rays per patch pair"),
       ParamDecl::integer("mc_samples", 16, 1, 4096, "montecarlo: point pairs per patch pair"),
-      ParamDecl::choice("solver", "gauss-seidel", {"gauss-seidel", "jacobi", "direct", "southwell"},
+      ParamDecl::choice("solver", "gauss-seidel", {"gauss-seidel", "jacobi", "direct", "southwell", "hierarchical"},
                         "direct: dense LU (up to 3000 patches); jacobi/gauss-seidel: sweeps to the tolerance; "
-                        "southwell: progressive refinement (shoot the largest unshot power)"),
+                        "southwell: progressive refinement (shoot the largest unshot power); hierarchical: "
+                        "Hanrahan et al. 1991, elements and links refined where they carry much power "
+                        "(patch_size, form_factors and show do not apply)"),
+      ParamDecl::real("link_epsilon", 1e-4, 1e-8, 1e-1,
+                      "hierarchical: a link is refined while it carries more than this fraction of the emitted "
+                      "power (smaller: more elements, more accurate, slower)"),
       ParamDecl::real("tolerance", 1e-4, 1e-9, 0.5, "stop when the relative residual is below this"),
       ParamDecl::integer("max_iterations", 1000, 1, 1000000, "iteration cap (southwell: N shots each)"),
       ParamDecl::choice("show", "solution", {"solution", "bounce", "bounces"},

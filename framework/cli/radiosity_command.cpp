@@ -96,11 +96,20 @@ Command addRadiosityCommand(CLI::App& app, const GlobalOptions& global) {
       for (const size_t n : solved->patches->refinement) std::printf(" %zu", n);
       std::printf("\n");
     }
-    std::printf("%zu patches (%.3f s), form factors %s: %zu non-zeros, %.3f s, row sums %.4f..%.4f (mean %.4f), "
-                "reciprocity error mean %.2g max %.2g\n",
-                solved->mesh().patches.size(), solved->patches->meshSeconds, a5::methodName(settings.formFactors.method).c_str(),
-                d.nonZeros, solved->patches->formFactorSeconds, d.rowSumMin, d.rowSumMax, d.rowSumMean, d.reciprocityMeanError,
-                d.reciprocityMaxError);
+    const auto& hierarchy = solved->patches->hierarchy;
+    if (hierarchy)
+      std::printf("hierarchical radiosity (link_epsilon %g): %zu base patches, %zu elements, %zu leaves, %zu links, "
+                  "%llu visibility rays, %d refinement rounds, %.3f s (refining %.3f s)\n",
+                  settings.hierarchical.linkEpsilon, hierarchy->basePatches, hierarchy->elements,
+                  solved->mesh().patches.size(), hierarchy->links,
+                  static_cast<unsigned long long>(hierarchy->visibilityRays), hierarchy->rounds,
+                  solved->patches->formFactorSeconds, hierarchy->refineSeconds);
+    else
+      std::printf("%zu patches (%.3f s), form factors %s: %zu non-zeros, %.3f s, row sums %.4f..%.4f (mean %.4f), "
+                  "reciprocity error mean %.2g max %.2g\n",
+                  solved->mesh().patches.size(), solved->patches->meshSeconds,
+                  a5::methodName(settings.formFactors.method).c_str(), d.nonZeros, solved->patches->formFactorSeconds,
+                  d.rowSumMin, d.rowSumMax, d.rowSumMean, d.reciprocityMeanError, d.reciprocityMaxError);
     std::printf("solver %s: %s after %d iterations, residual %.3g, %.3f s; power emitted %.4g, absorbed %.4g, "
                 "escaped %.4g\n",
                 a5::methodName(settings.solver.method).c_str(), sol.converged ? "converged" : "NOT converged",
@@ -155,7 +164,17 @@ Command addRadiosityCommand(CLI::App& app, const GlobalOptions& global) {
          {{"emitted", solved->energy.emitted}, {"absorbed", solved->energy.absorbed}, {"escaped", solved->energy.escaped}}},
         {"missing_tasks", solved->missingTasks},
         {"patches", patches}};
-    if (solved->mesh().patches.size() <= kMatrixMaxPatches) {
+    if (hierarchy)
+      out["hierarchical"] = {{"link_epsilon", settings.hierarchical.linkEpsilon},
+                             {"base_patches", hierarchy->basePatches},
+                             {"elements", hierarchy->elements},
+                             {"leaves", solved->mesh().patches.size()},
+                             {"links", hierarchy->links},
+                             {"visibility_rays", hierarchy->visibilityRays},
+                             {"rounds", hierarchy->rounds},
+                             {"seconds", solved->patches->formFactorSeconds},
+                             {"refine_seconds", hierarchy->refineSeconds}};
+    if (!hierarchy && solved->mesh().patches.size() <= kMatrixMaxPatches) {
       // What a user can check by hand on a small system: F itself (sparse rows), and the
       // Neumann series' terms K^n E that show=bounce displays, until they fade.
       const a5::FormFactors& f = solved->f();

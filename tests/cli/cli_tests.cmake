@@ -194,3 +194,15 @@ add_test(NAME cli.radiosity.singular_system_is_reported
          COMMAND ${LL} --quiet radiosity ${SCENES}/tests/closed_box_albedo_one.json --set patch_size=1 --set solver=direct)
 set_tests_properties(cli.radiosity.singular_system_is_reported PROPERTIES PASS_REGULAR_EXPRESSION
   "lightlab: radiosity \\(direct, 12 patches\\) NOT converged: the system is singular or nearly so \\(reciprocal condition number [-0-9.e]+, residual [-0-9.e]+\\); rho F is not a contraction: row [0-9]+ of rho F sums to 1 \\(reflectance 1 in a closed scene: light never leaves\\)")
+# Hierarchical radiosity (Hanrahan et al. 1991): elements and links in the JSON, links far fewer than leaves^2.
+add_test(NAME cli.radiosity.hierarchical
+         COMMAND ${LL} --quiet radiosity ${SCENES}/cornell_box.json --set solver=hierarchical --set link_epsilon=1e-4
+                 --json ${OUT}/hierarchical.json)
+set_tests_properties(cli.radiosity.hierarchical PROPERTIES PASS_REGULAR_EXPRESSION
+  "hierarchical radiosity \\(link_epsilon 0.0001\\): 32 base patches, [0-9]+ elements, [0-9]+ leaves, [0-9]+ links")
+add_test(NAME cli.radiosity.hierarchical_json
+         COMMAND ${Python3_EXECUTABLE} -c "import json,sys,math; s=json.load(open(sys.argv[1])); h=s['hierarchical']; \
+assert h['leaves']==len(s['patches'])>1000 and h['elements']>h['leaves'], h; assert h['links']<0.05*h['leaves']**2, h; \
+assert s['solver']['converged'] and s['solver']['failure']=='', s['solver']; \
+assert all(math.isfinite(c) for p in s['patches'] for c in p['radiosity']); print('ok', h)" ${OUT}/hierarchical.json)
+set_tests_properties(cli.radiosity.hierarchical_json PROPERTIES DEPENDS cli.radiosity.hierarchical)
