@@ -99,7 +99,7 @@ h=s['solver']['history']; assert s['solver']['converged'] and h[-1]['residual']<
 assert abs(s['form_factors']['row_sum']['max']-1)<0.01, s['form_factors']; \
 assert open(sys.argv[2]).read().startswith('<svg'); print('ok', len(p), 'patches')" ${OUT}/radiosity.json ${OUT}/radiosity.svg)
 set_tests_properties(cli.radiosity.cornell_box_json PROPERTIES DEPENDS cli.radiosity.cornell_box)
-lightlab_error_test(radiosity_bad_solver "parameter 'solver': unknown value 'cg' \\(one of: gauss-seidel, jacobi, direct, southwell\\)"
+lightlab_error_test(radiosity_bad_solver "parameter 'solver': unknown value 'cg' \\(one of: gauss-seidel, jacobi, direct, southwell, hierarchical\\)"
                     radiosity ${SCENES}/cornell_box.json --set solver=cg)
 lightlab_error_test(radiosity_direct_too_big "solver 'direct': [0-9]+ patches, more than the dense LU's limit of 3000"
                     --quiet radiosity ${SCENES}/cornell_box.json --set solver=direct --set patch_size=0.03 --set hemicube_res=4)
