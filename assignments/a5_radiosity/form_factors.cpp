@@ -77,17 +77,6 @@ Vec3 pointOnTriangle(const Vec3& a, const Vec3& b, const Vec3& c, Vec2 u) {
   return (1.0f - s) * a + s * (1.0f - u.y) * b + s * u.y * c;
 }
 
-// Whether the segment from x (on patch i, normal ni) to y (on patch j, normal nj) is unobstructed.
-bool visible(const Accelerator& accel, const Vec3& x, const Vec3& ni, const Vec3& y, const Vec3& nj, QueryCounters& q) {
-  Ray r;
-  r.origin = offsetRayOrigin(x, ni);
-  const Vec3 target = offsetRayOrigin(y, faceTowards(nj, x - y));
-  r.dir = target - r.origin;
-  r.tmin = 0.0f;
-  r.tmax = 1.0f;
-  return !accel.occluded(r, q);
-}
-
 // Clips polygon `in` (count <= 4) to the half-space n.(v - x) >= 0 (x's
 // front side); returns the new count (at most count + 1). Consecutive
 // duplicate corners (a corner on the plane) are dropped: the contour integral
@@ -129,7 +118,7 @@ std::vector<Entry> analyticRow(const PatchMesh& mesh, const Accelerator& accel, 
                             : pointOnTriangle(tri[0], tri[1], tri[2],
                                               Vec2(std::fmod(0.618034f * static_cast<float>(s), 1.0f),
                                                    (static_cast<float>(s) + 0.5f) / static_cast<float>(visSamples)));
-      seen += visible(accel, pi.centre, pi.normal, y, pj.normal, q) ? 1 : 0;
+      seen += visibleBetween(accel, pi.centre, pi.normal, y, pj.normal, q) ? 1 : 0;
       ++rays;
     }
     if (seen > 0) row.push_back({j, f * static_cast<float>(seen) / static_cast<float>(visSamples)});
@@ -259,7 +248,7 @@ std::vector<Entry> monteCarloRow(const PatchMesh& mesh, const Accelerator& accel
       if (!(omega > 0.0) || !(cosX > 0.0f) || !(along < 0.0f)) continue;
       const Vec3 y = x + (glm::dot(pj.normal, tj[0] - x) / along) * w;  // where w meets j's plane
       ++rays;
-      if (!visible(accel, x, pi.normal, y, pj.normal, q))
+      if (!visibleBetween(accel, x, pi.normal, y, pj.normal, q))
         sum -= omega / static_cast<double>(kPi) * static_cast<double>(cosX);
     }
     const double f = sum / samples;
@@ -269,6 +258,17 @@ std::vector<Entry> monteCarloRow(const PatchMesh& mesh, const Accelerator& accel
 }
 
 }  // namespace
+
+bool visibleBetween(const Accelerator& accel, const Vec3& x, const Vec3& ni, const Vec3& y, const Vec3& nj,
+                    QueryCounters& q) {
+  Ray r;
+  r.origin = offsetRayOrigin(x, ni);
+  const Vec3 target = offsetRayOrigin(y, faceTowards(nj, x - y));
+  r.dir = target - r.origin;
+  r.tmin = kSegmentTrim;
+  r.tmax = 1.0f - kSegmentTrim;
+  return !accel.occluded(r, q);
+}
 
 struct HemicubeRows::Cells {
   std::vector<HemicubeCell> cells;

@@ -95,4 +95,13 @@ double perpendicularRectanglesFormFactor(double sharedEdge, double width1, doubl
 
 std::string methodName(FormFactorMethod m);
 
+// Whether the segment from x (on a patch with unit normal nx) to y (on one with normal ny) is
+// unobstructed. The ends are offset off their surfaces and the segment is trimmed by kSegmentTrim of
+// its length at both ends: the offsets (~1e-5 units) are below the float resolution of t along a
+// 500-unit segment, so without the trim the two patches themselves were hit (the Cornell box's
+// analytic row sums averaged 0.804 with our BVH and 0.737 with Embree; 0.816 with both now).
+constexpr float kSegmentTrim = 1e-4f;
+bool visibleBetween(const Accelerator& accel, const Vec3& x, const Vec3& nx, const Vec3& y, const Vec3& ny,
+                    QueryCounters& q);
+
 }  // namespace ll::a5

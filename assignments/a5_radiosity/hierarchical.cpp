@@ -10,6 +10,7 @@
 #include <tbb/parallel_for.h>
 
 #include "core/rng.h"
+#include "form_factors.h"
 #include "render/ray_offset.h"
 
 namespace ll::a5 {
@@ -297,13 +298,8 @@ class HierarchicalSolver {
       const Vec3 d = y - x;
       if (glm::dot(np, d) <= 0.0f || glm::dot(nq, d) >= 0.0f) continue;  // not front to front
       ++valid;
-      Ray ray;
-      ray.origin = offsetRayOrigin(x, np);
-      ray.dir = offsetRayOrigin(y, nq) - ray.origin;
-      ray.tmin = 0.0f;
-      ray.tmax = 1.0f;
       ++rays;
-      if (!accel_.occluded(ray, counters)) ++seen;
+      if (visibleBetween(accel_, x, np, y, nq, counters)) ++seen;
     }
     if (valid > 0 && seen == 0) return false;  // blocked everywhere we looked
     l.v = valid > 0 ? static_cast<float>(seen) / static_cast<float>(valid) : 1.0f;

@@ -28,7 +28,11 @@ struct RadiositySettings {
   int adaptivePasses = 0;
   float adaptiveThreshold = 0.25f;
   int sphereSegments = 24;
-  std::string accelerator = "bvh";  // for the visibility rays (and the display)
+#ifdef LIGHTLAB_HAVE_EMBREE
+  std::string accelerator = "embree";  // for the visibility rays (and the display); see radiosity_technique.cpp
+#else
+  std::string accelerator = "bvh";
+#endif
   FormFactorSettings formFactors;
   SolverSettings solver;
   HierarchicalSettings hierarchical;  // solver = hierarchical: links and elements instead of F (hierarchical.h)

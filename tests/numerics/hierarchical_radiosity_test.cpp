@@ -187,7 +187,7 @@ TEST(Hierarchical_Radiosity, CornellBoxAgreesWithTheFullMatrix) {
   EXPECT_TRUE(r.converged) << r.failure;
   expectFinite(r);
   // Per object (walls, floor, ceiling, light, block faces): the area-weighted mean radiosity. Measured:
-  // 1.9 % apart on average, 4.3 % at most (a side of the tall block), HR mostly a little darker; the
+  // 1.6 % apart on average, 4.0 % at most (a side of the tall block), HR mostly a little darker; the
   // full matrix on 468 patches has its own discretisation error of that order.
   const size_t objects = scene.objects.size();
   const std::vector<double> want = perObject(reference->mesh(), reference->solution.radiosity, objects);
