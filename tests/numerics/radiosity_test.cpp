@@ -339,3 +339,36 @@ TEST(Numerics_Radiosity, NaNIsReportedByEverySolverAndNeverReturned) {
 
 }  // namespace
 }  // namespace ll
+
+namespace ll {
+namespace {
+
+// Two perpendicular squares of side 500 (millimetres, like the Cornell box)
+// sharing an edge (F = 0.20004), nothing between them: every visibility
+// segment is clear, however grazing, with any
+// accelerator (the patches' own surfaces were hit at t ~ 1 when the
+// segment's end offset fell below the float resolution of t).
+TEST(Numerics_Radiosity, VisibilitySegmentsOfLargeScenesDoNotHitTheirOwnPatches) {
+  SKIP_WITHOUT_SOLUTION();
+  const Scene scene = sceneFrom(R"(
+    {"type": "quad", "material": "m", "vertices": [[0, 0, 0], [500, 0, 0], [500, 500, 0], [0, 500, 0]]},
+    {"type": "quad", "material": "m", "vertices": [[0, 0, 0], [0, 0, 500], [500, 0, 500], [500, 0, 0]]})");
+  std::vector<std::string> accelerators = {"bvh"};
+#ifdef LIGHTLAB_HAVE_EMBREE
+  accelerators.push_back("embree");
+#endif
+  for (const std::string& accel : accelerators) {
+    for (const auto method : {a5::FormFactorMethod::Analytic, a5::FormFactorMethod::MonteCarlo}) {
+      SCOPED_TRACE(accel + ", " + a5::methodName(method));
+      a5::RadiositySettings r = settings(method, 0.2f);
+      r.accelerator = accel;
+      r.formFactors.visibilitySamples = 4;
+      const auto s = a5::solveScene(scene, r);
+      EXPECT_NEAR(objectFormFactor(*s, 0, 1), 0.20004, 5e-3);
+      EXPECT_EQ(s->diagnostics().visibilityRays > 0, true);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace ll
