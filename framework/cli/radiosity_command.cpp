@@ -3,10 +3,13 @@
 // B = E + rho F B (the technique `radiosity`'s parameters choose how), then
 // prints a summary: patches, times, form-factor diagnostics (row sums,
 // reciprocity), the solver's iterations and residual, the energy balance.
+// With progressive=true it runs progressive refinement and records its
+// history (shots, unshot power, time) instead.
 // --json writes every patch and the solver's history (and, up to 500
 // patches, the form-factor matrix and the bounce terms K^n E until they fall
 // below 1e-4 of E); --plot draws the residual history (log scale) as an SVG.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -17,6 +20,7 @@
 #include "cli/scene_setup.h"
 #include "core/error.h"
 #include "core/files.h"
+#include "core/progress.h"
 #include "radiosity_scene.h"
 
 namespace ll::cli {
@@ -71,6 +75,54 @@ void writePlot(const a5::Solution& s, const std::string& title, const std::strin
   out << "'/>\n</svg>\n";
 }
 
+// progressive=true: Cohen et al.'s progressive refinement, shot by shot
+// (rows computed as patches shoot), recorded after 32, 64, 128, ... shots
+// until the unshot power is below the tolerance or the cap (max_iterations
+// x patches shots); --json writes that history and what it displays.
+void runProgressive(const SceneSetup& s, const a5::RadiositySettings& settings, const RadiosityOptions& o) {
+  const auto start = std::chrono::steady_clock::now();
+  const a5::ProgressiveScene scene = a5::progressiveScene(s.scene, settings);
+  const a5::PatchMesh& mesh = scene.patches->mesh;
+  const size_t cap = static_cast<size_t>(std::max(settings.solver.maxIterations, 1)) * std::max<size_t>(mesh.patches.size(), 1);
+  nlohmann::json history = nlohmann::json::array();
+  std::vector<Rgb> shown;
+  double unshot = 1.0;
+  ProgressBar bar("progressive refinement (" + std::to_string(mesh.patches.size()) + " patches)", 1.0, settings.quiet);
+  for (size_t shots = 32;; shots = std::min(2 * shots, cap)) {
+    const size_t before = scene.state->shots();
+    scene.state->advance(shots, settings.solver.tolerance);
+    shown = scene.state->displayed(&unshot);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    history.push_back({{"shots", scene.state->shots()}, {"unshot_fraction", unshot}, {"seconds", seconds}});
+    if (unshot > 0.0 && unshot < 1.0) bar.update(std::clamp(std::log(unshot) / std::log(settings.solver.tolerance), 0.0, 1.0));
+    if (unshot <= settings.solver.tolerance || scene.state->shots() == before || shots >= cap) break;
+  }
+  bar.finish();
+  const bool converged = unshot <= settings.solver.tolerance;
+  std::printf("progressive refinement: %zu patches, %zu shots, unshot %.3g of the emitted power (%s), %.3f s\n",
+              mesh.patches.size(), scene.state->shots(), unshot, converged ? "converged" : "NOT converged",
+              history.back()["seconds"].get<double>());
+  if (o.json.empty()) return;
+  nlohmann::json patches = nlohmann::json::array();
+  for (size_t i = 0; i < mesh.patches.size(); ++i) {
+    const a5::Patch& p = mesh.patches[i];
+    patches.push_back({{"id", i}, {"object", s.scene.objects[p.object].name}, {"object_id", p.object}, {"area", p.area},
+                       {"centre", vec(p.centre)}, {"normal", vec(p.normal)}, {"emission", vec(p.emission)},
+                       {"reflectance", vec(p.reflectance)}, {"radiosity", vec(shown[i])}});
+  }
+  const nlohmann::json out = {{"scene", o.scene},
+                              {"parameters", s.techniqueParams.toJson()},
+                              {"mesh", {{"patches", mesh.patches.size()}, {"seconds", scene.patches->meshSeconds}}},
+                              {"progressive", {{"converged", converged}, {"shots", scene.state->shots()},
+                                               {"unshot_fraction", unshot}, {"history", history}}},
+                              {"patches", patches}};
+  createParentDirectory(o.json);
+  std::ofstream file(o.json);
+  if (!file) throwUserError(o.json + ": cannot write");
+  file << out.dump(1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
+  std::printf("wrote %s\n", o.json.c_str());
+}
+
 }  // namespace
 
 Command addRadiosityCommand(CLI::App& app, const GlobalOptions& global) {
@@ -84,6 +136,10 @@ Command addRadiosityCommand(CLI::App& app, const GlobalOptions& global) {
     SceneSetup s = setUpScene(o->scene, "radiosity", "none", o->sets);
     a5::RadiositySettings settings = a5::radiositySettings(s.techniqueParams);
     settings.quiet = global.quiet;
+    if (settings.progressive) {
+      runProgressive(s, settings, *o);
+      return;
+    }
     const auto solved = a5::solveScene(s.scene, settings);
     for (const auto& [id, what] : solved->missingTasks)
       std::fprintf(stderr, "lightlab: %s not implemented: %s -- its reference stood in\n", id.c_str(), what.c_str());

@@ -206,3 +206,15 @@ assert h['leaves']==len(s['patches'])>1000 and h['elements']>h['leaves'], h; ass
 assert s['solver']['converged'] and s['solver']['failure']=='', s['solver']; \
 assert all(math.isfinite(c) for p in s['patches'] for c in p['radiosity']); print('ok', h)" ${OUT}/hierarchical.json)
 set_tests_properties(cli.radiosity.hierarchical_json PROPERTIES DEPENDS cli.radiosity.hierarchical)
+# Progressive refinement's history: shots and unshot power after 32, 64, 128, ... shots, falling to the tolerance.
+add_test(NAME cli.radiosity.progressive_history
+         COMMAND ${LL} --quiet radiosity ${SCENES}/cornell_box.json --set progressive=true --set patch_size=0.1
+                 --set hemicube_res=16 --json ${OUT}/progressive.json)
+set_tests_properties(cli.radiosity.progressive_history PROPERTIES PASS_REGULAR_EXPRESSION
+  "progressive refinement: [0-9]+ patches, [0-9]+ shots, unshot [-0-9.e]+ of the emitted power \\(converged\\)")
+add_test(NAME cli.radiosity.progressive_history_json
+         COMMAND ${Python3_EXECUTABLE} -c "import json,sys; s=json.load(open(sys.argv[1])); p=s['progressive']; h=p['history']; \
+assert p['converged'] and h[0]['shots']==32 and len(h)>3, p; \
+assert all(b['shots']>a['shots'] and b['unshot_fraction']<=a['unshot_fraction'] for a,b in zip(h,h[1:])), h; \
+assert h[-1]['unshot_fraction']<=1e-4 and len(s['patches'])>300; print('ok', len(h), 'steps')" ${OUT}/progressive.json)
+set_tests_properties(cli.radiosity.progressive_history_json PROPERTIES DEPENDS cli.radiosity.progressive_history)
