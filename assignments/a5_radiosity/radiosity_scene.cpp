@@ -62,6 +62,7 @@ uint64_t fingerprint(const Scene& s) {
 std::string patchKey(const Scene& s, const RadiositySettings& r) {
   const FormFactorSettings& f = r.formFactors;
   return std::to_string(fingerprint(s)) + "|" + std::to_string(r.patchSize) + "|" + std::to_string(r.discontinuityMeshing) +
+         std::to_string(r.quadPatches) +
          "|" + std::to_string(r.sphereSegments) +
          "|" + r.accelerator + "|" + methodName(f.method) + "|" + std::to_string(f.hemicubeResolution) + "|" +
          std::to_string(f.visibilitySamples) + "|" + std::to_string(f.monteCarloSamples) + "|" +
@@ -83,7 +84,7 @@ std::shared_ptr<const PatchScene> computePatches(const Scene& scene, const Radio
   auto t = std::chrono::steady_clock::now();
   reportPhase("patch mesh");
   out->mesh = buildPatchMesh(scene, r.patchSize * scene.geometry.sceneBounds().diagonal(), r.sphereSegments,
-                             r.discontinuityMeshing);
+                             r.discontinuityMeshing, r.quadPatches);
   out->meshSeconds = since(t);
   out->refinement.push_back(out->mesh.patches.size());
   const AcceleratorInfo info = acceleratorNamed(r.accelerator);
@@ -116,8 +117,8 @@ std::shared_ptr<const PatchScene> computePatches(const Scene& scene, const Radio
     std::vector<uint8_t> split(b.size(), 0);
     size_t marked = 0;
     for (uint32_t i = 0; i < b.size(); ++i)
-      for (int k = 0; k < 3; ++k)
-        for (const uint32_t j : out->mesh.vertexPatches[out->mesh.patches[i].vertices[k]]) {
+      for (int k = 0; k < out->mesh.patches[i].corners(); ++k)
+        for (const uint32_t j : out->mesh.vertexPatches[out->mesh.patches[i].corner(k)]) {
           const float brighter = std::max(maxComponent(b[i]), maxComponent(b[j]));
           if (!split[i] && brighter > 0.0f && maxComponent(glm::abs(b[i] - b[j])) > r.adaptiveThreshold * brighter) {
             split[i] = 1;
@@ -174,6 +175,7 @@ HierarchicalPatches computeHierarchical(const Scene& scene, const RadiositySetti
   for (size_t leaf = 0; leaf < h.triangles.size(); ++leaf) {
     const Patch& parent = base.patches[h.basePatch[leaf]];
     Patch p = parent;
+    p.fourth = kNoCorner;  // (leaves are triangles)
     for (int k = 0; k < 3; ++k) {
       const Vec3& x = h.positions[h.triangles[leaf][k]];
       auto it = vertexAt.find({x.x, x.y, x.z, parent.object});
@@ -192,6 +194,7 @@ HierarchicalPatches computeHierarchical(const Scene& scene, const RadiositySetti
   for (uint32_t i = 0; i < mesh.patches.size(); ++i) {
     mesh.geometry.triangles.push_back(mesh.patches[i].vertices);
     mesh.geometry.triangleObject.push_back(mesh.patches[i].object);
+    mesh.primPatch.push_back(i);
     for (int k = 0; k < 3; ++k) mesh.vertexPatches[mesh.patches[i].vertices[k]].push_back(i);
   }
   mesh.geometry.positions = mesh.positions;
@@ -295,6 +298,7 @@ RadiositySettings radiositySettings(const ParamSet& p) {
   r.patchSize = static_cast<float>(p.getFloat("patch_size"));
   r.sphereSegments = p.getInt("sphere_segments");
   r.discontinuityMeshing = p.getBool("discontinuity_meshing");
+  r.quadPatches = p.getBool("quad_patches");
   r.accelerator = p.getChoice("patch_accelerator");
   const std::string& ff = p.getChoice("form_factors");
   r.formFactors.method = ff == "analytic" ? FormFactorMethod::Analytic
@@ -335,7 +339,7 @@ ProgressiveScene progressiveScene(const Scene& scene, const RadiositySettings& s
   static std::mutex mutex;
   static std::list<std::pair<std::string, ProgressiveScene>> cache;  // newest first
   const std::string k = std::to_string(fingerprint(scene)) + "|" + std::to_string(settings.patchSize) + "|" +
-                        std::to_string(settings.discontinuityMeshing) + "|" +
+                        std::to_string(settings.discontinuityMeshing) + std::to_string(settings.quadPatches) + "|" +
                         std::to_string(settings.sphereSegments) + "|" + settings.accelerator + "|" +
                         std::to_string(settings.formFactors.hemicubeResolution);
   const std::lock_guard lock(mutex);

@@ -22,6 +22,7 @@ namespace ll::a5 {
 struct RadiositySettings {
   float patchSize = 0.04f;  // longest patch edge, as a fraction of the scene's bounding-box diagonal
   bool discontinuityMeshing = true;  // cut planar objects along what lies on them first (patch_mesh.h)
+  bool quadPatches = true;           // planar quads (not cut) as grids of quad patches (patch_mesh.h)
   // Adaptive refinement: this many rounds of (form factors, solve, split every
   // patch whose radiosity differs from a neighbour's by more than the
   // threshold, relative to the brighter), before the final form factors.

@@ -87,12 +87,14 @@ class Radiosity final : public PixelTechnique {
     const Ray ray = referenceCameraRay(camera_, *frame_, s.position.x, s.position.y);
     Hit hit;
     if (!tracer.intersect(ray, hit, RayKind::Camera)) return ctx.scene.background;  // (over the patches)
-    const a5::Patch& p = patches_->mesh.patches[hit.prim];
-    if (glm::dot(p.normal, ray.dir) >= 0.0f) return Rgb(0.0f);  // the back of a patch: not solved
-    Rgb b = shown_[hit.prim];
-    if (gouraud_)
-      b = (1.0f - hit.b1 - hit.b2) * corners_[p.vertices.x] + hit.b1 * corners_[p.vertices.y] +
-          hit.b2 * corners_[p.vertices.z];
+    const a5::PatchMesh& mesh = patches_->mesh;
+    const uint32_t patch = mesh.primPatch[hit.prim];  // (a quad patch is two triangles)
+    if (glm::dot(mesh.patches[patch].normal, ray.dir) >= 0.0f) return Rgb(0.0f);  // the back of a patch: not solved
+    Rgb b = shown_[patch];
+    if (gouraud_) {
+      const glm::uvec3& t = mesh.geometry.triangles[hit.prim];
+      b = (1.0f - hit.b1 - hit.b2) * corners_[t.x] + hit.b1 * corners_[t.y] + hit.b2 * corners_[t.z];
+    }
     return b / kPi;  // a diffuse surface's radiance
   }
 
@@ -112,12 +114,15 @@ std::vector<ParamDecl> radiosityParams() {
   return {
       ParamDecl::real("patch_size", 0.04, 0.002, 1.0,
                       "longest patch edge, as a fraction of the scene's bounding-box diagonal"),
+      ParamDecl::boolean("quad_patches", true,
+                         "flat quads (walls, box faces) become grids of quad patches; false: triangles everywhere"),
       ParamDecl::boolean("discontinuity_meshing", true,
                          "cut flat surfaces along the outlines of what lies on them (the lamp on the ceiling, "
                          "the blocks on the floor) before meshing, so no patch straddles the jump"),
       ParamDecl::integer("adaptive_passes", 0, 0, 8,
                          "adaptive refinement: rounds of solving and splitting patches whose radiosity differs "
-                         "from a neighbour's by more than adaptive_threshold"),
+                         "from a neighbour's by more than adaptive_threshold (on triangles: quad patches become "
+                         "two each in the first round)"),
       ParamDecl::real("adaptive_threshold", 0.25, 0.01, 10.0,
                       "relative radiosity difference between neighbouring patches that splits them"),
       ParamDecl::choice("form_factors", "hemicube", {"hemicube", "analytic", "montecarlo"},
@@ -176,12 +181,12 @@ class RadiosityRasterShader final : public a1::Shader {
   RadiosityRasterShader(const a5::PatchMesh& mesh, const std::vector<Rgb>& shown, const std::vector<Rgb>& corners,
                         bool gouraud, const Mat4& viewProjection, Vec3 eye)
       : mesh_(mesh), shown_(shown), corners_(corners), gouraud_(gouraud), viewProjection_(viewProjection), eye_(eye) {}
-  // Vertex k of patch k / 3.
+  // Vertex k of triangle k / 3 (a quad patch is two).
   Vec4 vertex(int index, int, a1::Varyings& out) const override {
-    const auto patch = static_cast<uint32_t>(index / 3);
-    const uint32_t v = mesh_.patches[patch].vertices[index % 3];
+    const auto triangle = static_cast<uint32_t>(index / 3);
+    const uint32_t v = mesh_.geometry.triangles[triangle][index % 3];
     out.position = mesh_.positions[v];
-    out.diffuse = gouraud_ ? corners_[v] : shown_[patch];
+    out.diffuse = gouraud_ ? corners_[v] : shown_[mesh_.primPatch[triangle]];
     return viewProjection_ * Vec4(out.position, 1.0f);
   }
   Rgb fragment(const a1::Fragment& f) const override {
@@ -223,7 +228,7 @@ class RadiosityRaster final : public Technique {
     s.scale = samples == "16" ? 4 : samples == "4" ? 2 : 1;
     s.background = ctx.scene.background;
     s.taskLog = ctx.taskLog;
-    const int vertices = static_cast<int>(3 * solved_->mesh().patches.size());
+    const int vertices = static_cast<int>(3 * solved_->mesh().geometry.triangles.size());
     counters.nonFinite += a1::rasterize(workspace_, shader, {a1::DrawCall{0, vertices, 0}}, s, fb, cancel);
   }
 

@@ -180,7 +180,10 @@ Command addRadiosityCommand(CLI::App& app, const GlobalOptions& global) {
     nlohmann::json patches = nlohmann::json::array();
     for (size_t i = 0; i < solved->mesh().patches.size(); ++i) {
       const a5::Patch& p = solved->mesh().patches[i];
+      nlohmann::json corners = nlohmann::json::array();
+      for (int k = 0; k < p.corners(); ++k) corners.push_back(vec(solved->mesh().positions[p.corner(k)]));
       patches.push_back({{"id", i},
+                         {"corners", corners},
                          {"object", s.scene.objects[p.object].name},
                          {"object_id", p.object},
                          {"area", p.area},

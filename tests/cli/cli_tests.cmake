@@ -174,16 +174,17 @@ if(LIGHTLAB_WITH_GUI)
   lightlab_error_test(gui_slides_bad_deck "unknown_key\\.md:9:2: unknown key 'pane' in preset"
                       gui --slides ${BAD_DECKS}/unknown_key.md)
 endif()
-# A system small enough to check by hand: the white furnace as 12 patches. --json writes F (rows sum to
-# 1: a closed room, normalised hemicube) and the bounce terms K^n E, which sum to the solution.
+# A system small enough to check by hand: the white furnace as 6 quad patches. --json writes F (rows sum
+# to 1: a closed room, normalised hemicube) and the bounce terms K^n E, which sum to the solution.
 add_test(NAME cli.radiosity.furnace_matrix_and_bounces
          COMMAND ${LL} --quiet radiosity ${SCENES}/tests/furnace.json --set patch_size=1 --set solver=direct
                  --json ${OUT}/furnace_radiosity.json)
 add_test(NAME cli.radiosity.furnace_matrix_and_bounces_json
          COMMAND ${Python3_EXECUTABLE} -c "import json,sys,math; s=json.load(open(sys.argv[1])); \
-rows=s['form_factors']['matrix']['rows']; assert len(rows)==12, len(rows); \
+rows=s['form_factors']['matrix']['rows']; assert len(rows)==6, len(rows); \
 assert all(abs(sum(f for j,f in r)-1)<1e-5 for r in rows), [sum(f for j,f in r) for r in rows]; \
-b=s['bounces']; total=[sum(t['radiosity'][i][0] for t in b) for i in range(12)]; \
+b=s['bounces']; total=[sum(t['radiosity'][i][0] for t in b) for i in range(6)]; \
+assert all(len(p['corners'])==4 for p in s['patches']); \
 exact=math.pi/(1-0.8); assert all(abs(x-exact)<1e-3*exact for x in total), (len(b), total); \
 assert all(abs(p['radiosity'][0]-exact)<1e-4*exact for p in s['patches']); \
 assert s['solver']['converged'] and s['solver']['failure']=='', s['solver']; print('ok', len(b), 'bounce terms')"
@@ -193,7 +194,7 @@ set_tests_properties(cli.radiosity.furnace_matrix_and_bounces_json PROPERTIES DE
 add_test(NAME cli.radiosity.singular_system_is_reported
          COMMAND ${LL} --quiet radiosity ${SCENES}/tests/closed_box_albedo_one.json --set patch_size=1 --set solver=direct)
 set_tests_properties(cli.radiosity.singular_system_is_reported PROPERTIES PASS_REGULAR_EXPRESSION
-  "lightlab: radiosity \\(direct, 12 patches\\) NOT converged: the system is singular or nearly so \\(reciprocal condition number [-0-9.e]+, residual [-0-9.e]+\\); rho F is not a contraction: row [0-9]+ of rho F sums to 1 \\(reflectance 1 in a closed scene: light never leaves\\)")
+  "lightlab: radiosity \\(direct, 6 patches\\) NOT converged: the system is singular or nearly so \\(reciprocal condition number [-0-9.e]+, residual [-0-9.e]+\\); rho F is not a contraction: row [0-9]+ of rho F sums to 1 \\(reflectance 1 in a closed scene: light never leaves\\)")
 # Hierarchical radiosity (Hanrahan et al. 1991): elements and links in the JSON, links far fewer than leaves^2.
 add_test(NAME cli.radiosity.hierarchical
          COMMAND ${LL} --quiet radiosity ${SCENES}/cornell_box.json --set solver=hierarchical --set link_epsilon=1e-4

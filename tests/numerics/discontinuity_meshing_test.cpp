@@ -101,6 +101,7 @@ TEST(DiscontinuityMeshing, TheCeilingBesideTheLampHasNoDarkHalo) {
     r.patchSize = 0.06f;
     r.formFactors.hemicubeResolution = 16;
     r.discontinuityMeshing = cut;
+    r.quadPatches = false;  // (uncut, the ceiling would be a grid of quads: triangles both ways)
     const auto s = a5::solveScene(scene, r);
     // Ceiling patches with a corner on the lamp's outline (x in [213, 343], z in [227, 332]), outside it.
     double ratio = 0.0;

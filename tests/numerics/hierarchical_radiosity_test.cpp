@@ -177,7 +177,8 @@ TEST(Hierarchical_Radiosity, CornellBoxAgreesWithTheFullMatrix) {
   full.formFactors.method = a5::FormFactorMethod::Analytic;
   full.formFactors.visibilitySamples = 4;
   full.solver.method = a5::SolverMethod::Direct;
-  full.discontinuityMeshing = false;  // like for like: the hierarchy starts from the uncut polygons
+  full.discontinuityMeshing = false;  // like for like: the hierarchy starts from the uncut polygons,
+  full.quadPatches = false;           // as triangles
   const auto reference = a5::solveScene(scene, full);
   // HR from the scene's own polygons (32 triangles).
   const Base base = baseOf(scene);
