@@ -79,11 +79,22 @@ echo "ok: light_samples = $(q s5.json "j['panes'][0]['params']['light_samples']"
   "image version $(q s5a.json "j['panes'][0]['image_version']") -> $(q s5.json "j['panes'][0]['image_version']"))"
 
 # 6. A broken scene, typed into the path box: its error is shown, the bunny stays and still renders.
-click s6a scene.path
-xdotool sleep 0.2 keydown ctrl keydown a sleep 0.2 keyup a keyup ctrl
-xdotool sleep 0.2 type --delay 10 "$ROOT/data/scenes/tests/bad/unknown_key.json"
-click s6b scene.open
-until_shot s6 "any('unknown_key.json:6:5: unknown key' in m['text'] for m in j['messages'])"
+# A click that no frame took up (a loaded CI machine) leaves the field unfocused or Open unpressed:
+# the whole entry is made again, as a user would, three tries of 40 s.
+reported="any('unknown_key.json:6:5: unknown key' in m['text'] for m in j['messages'])"
+for attempt in 1 2 3; do
+  click s6a scene.path
+  xdotool sleep 0.2 keydown ctrl keydown a sleep 0.2 keyup a keyup ctrl
+  xdotool sleep 0.2 type --delay 10 "$ROOT/data/scenes/tests/bad/unknown_key.json"
+  click s6b scene.open
+  end=$((SECONDS + 40))
+  while [ $SECONDS -lt $end ]; do
+    shot s6
+    [ "$(q s6.json "$reported")" = True ] && break 2
+    sleep 0.3
+  done
+done
+[ "$(q s6.json "$reported")" = True ] || fail "s6: never true: $reported (three tries)"
 [ "$(q s6.json "j['scene'].endswith('/data/scenes/bunny.json')")" = True ] || fail "the bunny was replaced"
 echo "ok: the broken scene was reported and the bunny kept"
 
