@@ -88,6 +88,27 @@ void splitLongEdges(OmMesh& mesh, float maxEdge) {
 
 }  // namespace
 
+void PatchMesh::buildViews() {
+  PatchMesh& out = *this;
+  Geometry& g = out.geometry;
+  g = Geometry{};
+  g.positions = out.positions;
+  out.vertexPatches.assign(out.positions.size(), {});
+  out.primPatch.clear();
+  for (uint32_t i = 0; i < out.patches.size(); ++i) {
+    const Patch& p = out.patches[i];
+    g.triangles.push_back(p.vertices);
+    g.triangleObject.push_back(p.object);
+    out.primPatch.push_back(i);
+    if (p.corners() == 4) {
+      g.triangles.emplace_back(p.vertices.x, p.vertices.z, p.fourth);
+      g.triangleObject.push_back(p.object);
+      out.primPatch.push_back(i);
+    }
+    for (int k = 0; k < p.corners(); ++k) out.vertexPatches[p.corner(k)].push_back(i);
+  }
+}
+
 int PatchMesh::cornerPositions(uint32_t i, Vec3 out[4]) const {
   const Patch& p = patches[i];
   for (int k = 0; k < p.corners(); ++k) out[k] = positions[p.corner(k)];
@@ -242,26 +263,6 @@ void appendQuadGrid(const Scene& scene, uint32_t o, const Vec3 c[4], float maxEd
     }
 }
 
-// The Geometry view and the vertex -> patches table of `out`'s patches.
-void finish(PatchMesh& out) {
-  Geometry& g = out.geometry;
-  g = Geometry{};
-  g.positions = out.positions;
-  out.vertexPatches.assign(out.positions.size(), {});
-  out.primPatch.clear();
-  for (uint32_t i = 0; i < out.patches.size(); ++i) {
-    const Patch& p = out.patches[i];
-    g.triangles.push_back(p.vertices);
-    g.triangleObject.push_back(p.object);
-    out.primPatch.push_back(i);
-    if (p.corners() == 4) {
-      g.triangles.emplace_back(p.vertices.x, p.vertices.z, p.fourth);
-      g.triangleObject.push_back(p.object);
-      out.primPatch.push_back(i);
-    }
-    for (int k = 0; k < p.corners(); ++k) out.vertexPatches[p.corner(k)].push_back(i);
-  }
-}
 
 // Object o's triangles cut along `lines` (discontinuity_cuts.h), into `mesh`
 // with corners shared by position (the cuts made them as floats).
@@ -313,7 +314,7 @@ PatchMesh buildPatchMesh(const Scene& scene, float maxEdge, int sphereSegments, 
     appendObject(scene, o, mesh, out, lines);
     out.cuts.push_back(lines);
   }
-  finish(out);
+  out.buildViews();
   return out;
 }
 
@@ -367,7 +368,7 @@ PatchMesh refinePatchMesh(const Scene& scene, const PatchMesh& mesh, const std::
     appendObject(scene, o, m, out, lines);
     out.cuts.push_back(lines);
   }
-  finish(out);
+  out.buildViews();
   return out;
 }
 

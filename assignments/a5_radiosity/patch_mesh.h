@@ -51,6 +51,8 @@ struct PatchMesh {
   std::vector<std::vector<uint32_t>> vertexPatches;
   std::vector<std::vector<CutLine>> cuts;  // per object: the lines it was cut along (discontinuity_cuts.h)
   float totalArea() const;
+  // Fills geometry, primPatch and vertexPatches from positions and patches.
+  void buildViews();
   // Patch i's corner positions into `out`; returns their count (3 or 4).
   int cornerPositions(uint32_t i, Vec3 out[4]) const;
 };

@@ -190,14 +190,7 @@ HierarchicalPatches computeHierarchical(const Scene& scene, const RadiositySetti
     p.centre = (a + b + c) / 3.0f;
     mesh.patches.push_back(p);
   }
-  mesh.vertexPatches.assign(mesh.positions.size(), {});
-  for (uint32_t i = 0; i < mesh.patches.size(); ++i) {
-    mesh.geometry.triangles.push_back(mesh.patches[i].vertices);
-    mesh.geometry.triangleObject.push_back(mesh.patches[i].object);
-    mesh.primPatch.push_back(i);
-    for (int k = 0; k < 3; ++k) mesh.vertexPatches[mesh.patches[i].vertices[k]].push_back(i);
-  }
-  mesh.geometry.positions = mesh.positions;
+  mesh.buildViews();
   out->refinement = {base.patches.size(), mesh.patches.size()};
   out->accel = info.make(ParamSet(info.name, info.params));
   out->accel->build(mesh.geometry);

@@ -34,6 +34,23 @@ struct RadiosityOptions {
 
 nlohmann::json vec(const Vec3& v) { return {v.x, v.y, v.z}; }
 
+// One patch as --json writes it: its corners, object, area, centre, normal, E, rho and radiosity B.
+nlohmann::json patchJson(const Scene& scene, const a5::PatchMesh& mesh, uint32_t i, const Rgb& radiosity) {
+  const a5::Patch& p = mesh.patches[i];
+  nlohmann::json corners = nlohmann::json::array();
+  for (int k = 0; k < p.corners(); ++k) corners.push_back(vec(mesh.positions[p.corner(k)]));
+  return {{"id", i},
+          {"corners", corners},
+          {"object", scene.objects[p.object].name},
+          {"object_id", p.object},
+          {"area", p.area},
+          {"centre", vec(p.centre)},
+          {"normal", vec(p.normal)},
+          {"emission", vec(p.emission)},
+          {"reflectance", vec(p.reflectance)},
+          {"radiosity", vec(radiosity)}};
+}
+
 // --json writes the form-factor matrix and the bounce terms up to this many patches.
 constexpr size_t kMatrixMaxPatches = 500;
 constexpr int kMaxBounceTerms = 64;
@@ -104,12 +121,7 @@ void runProgressive(const SceneSetup& s, const a5::RadiositySettings& settings, 
               history.back()["seconds"].get<double>());
   if (o.json.empty()) return;
   nlohmann::json patches = nlohmann::json::array();
-  for (size_t i = 0; i < mesh.patches.size(); ++i) {
-    const a5::Patch& p = mesh.patches[i];
-    patches.push_back({{"id", i}, {"object", s.scene.objects[p.object].name}, {"object_id", p.object}, {"area", p.area},
-                       {"centre", vec(p.centre)}, {"normal", vec(p.normal)}, {"emission", vec(p.emission)},
-                       {"reflectance", vec(p.reflectance)}, {"radiosity", vec(shown[i])}});
-  }
+  for (uint32_t i = 0; i < mesh.patches.size(); ++i) patches.push_back(patchJson(s.scene, mesh, i, shown[i]));
   const nlohmann::json out = {{"scene", o.scene},
                               {"parameters", s.techniqueParams.toJson()},
                               {"mesh", {{"patches", mesh.patches.size()}, {"seconds", scene.patches->meshSeconds}}},
@@ -178,21 +190,8 @@ Command addRadiosityCommand(CLI::App& app, const GlobalOptions& global) {
     }
     if (o->json.empty()) return;
     nlohmann::json patches = nlohmann::json::array();
-    for (size_t i = 0; i < solved->mesh().patches.size(); ++i) {
-      const a5::Patch& p = solved->mesh().patches[i];
-      nlohmann::json corners = nlohmann::json::array();
-      for (int k = 0; k < p.corners(); ++k) corners.push_back(vec(solved->mesh().positions[p.corner(k)]));
-      patches.push_back({{"id", i},
-                         {"corners", corners},
-                         {"object", s.scene.objects[p.object].name},
-                         {"object_id", p.object},
-                         {"area", p.area},
-                         {"centre", vec(p.centre)},
-                         {"normal", vec(p.normal)},
-                         {"emission", vec(p.emission)},
-                         {"reflectance", vec(p.reflectance)},
-                         {"radiosity", vec(sol.radiosity[i])}});
-    }
+    for (uint32_t i = 0; i < solved->mesh().patches.size(); ++i)
+      patches.push_back(patchJson(s.scene, solved->mesh(), i, sol.radiosity[i]));
     nlohmann::json history = nlohmann::json::array();
     for (const a5::SolverStep& step : sol.history)
       history.push_back({{"iteration", step.iteration}, {"residual", step.residual}, {"seconds", step.seconds}});
