@@ -333,7 +333,8 @@ TEST(SceneSetup, UnknownAcceleratorListsKnownOnes) {
 TEST(SceneSetup, SetAssignmentsAreValidatedBeforeLoading) {
   const std::string missing = kScenes + "nope.json";
   EXPECT_TRUE(contains(errorOf([&] { cli::setUpScene(missing, "raycast", "none", {"samples=4"}); }),
-                       "technique 'raycast' has no parameter 'samples' (parameters: light_samples, intersection)"));
+                       "technique 'raycast' has no parameter 'samples' "
+                       "(parameters: light_samples, intersection, shadows)"));
   EXPECT_TRUE(contains(errorOf([&] { cli::setUpScene(missing, "raycast", "none", {"light_samples=0"}); }),
                        "parameter 'light_samples' = 0 is out of range [1, 1024]"));
   EXPECT_TRUE(contains(errorOf([&] { cli::setUpScene(missing, "raycast", "none", {"intersection=gpu"}); }),

@@ -3,8 +3,11 @@
 // to every point light and to every sample of every area light.
 //
 //   lightlab render SCENE -t raycast [--spp N] [--set light_samples=16]
-//                   [--set intersection=auto|student|framework]
+//                   [--set intersection=auto|student|framework] [--set shadows=filtered|opaque]
 //
+// Shadow rays are filtered as Whitted's are (render/shadow_transmittance.h):
+// glass in the way tints the light and absorbs it along its path inside;
+// the camera is in air (ray casting does not refract).
 // Area lights (emissive geometry) are sampled as light_samples point lights
 // of intensity I = Le * (A / N) * cos(theta_light) / pi each, which makes the
 // diffuse term the physically right (kd / pi) * E. Framework code: students
@@ -13,6 +16,7 @@
 
 #include "a2_tasks.h"
 #include "render/ray_offset.h"
+#include "render/shadow_transmittance.h"
 #include "render/technique.h"
 #include "student_intersector.h"
 
@@ -25,6 +29,8 @@ class Raycast final : public PixelTechnique {
   void prepare(const RenderContext& ctx) override {
     camera_ = renderCamera(ctx.scene, ctx.settings);
     lightSamples_ = ctx.params.getInt("light_samples");
+    // Only a scene with transmissive surfaces has anything to filter: elsewhere the cheaper any-hit query.
+    filtered_ = ctx.params.getChoice("shadows") == "filtered" && ctx.scene.effects.has(Effect::Refraction);
     student_.reset();
     // auto: your tests when there is no accelerator (-a none, the default), else the accelerator's.
     const std::string& choice = ctx.params.getChoice("intersection");
@@ -67,7 +73,7 @@ class Raycast final : public PixelTechnique {
         in.distance = kInfinity;
         in.l = -light.direction;
       }
-      radiance += shade(tracer, sp, surface, in, light.canBeOccluded);
+      radiance += shade(scene, tracer, sp, surface, in, light.canBeOccluded);
     }
 
     for (const AreaLight& light : scene.areaLights) {
@@ -82,7 +88,7 @@ class Raycast final : public PixelTechnique {
         const float cosLight = glm::dot(lp.normal, -in.l);
         if (cosLight <= 0.0f) continue;  // behind the emitting side
         in.intensity = lp.emission * (light.area / static_cast<float>(lightSamples_)) * cosLight / kPi;
-        radiance += shade(tracer, sp, surface, in, light.canBeOccluded);
+        radiance += shade(scene, tracer, sp, surface, in, light.canBeOccluded);
       }
     }
     return radiance;
@@ -90,15 +96,19 @@ class Raycast final : public PixelTechnique {
 
  private:
   // One light's Blinn-Phong term, if the light is in front of the surface and visible.
-  static Rgb shade(const Tracer& tracer, const SurfacePoint& sp, const a2::ShadingInput& surface,
-                   const a2::LightInput& light, bool castShadow) {
+  Rgb shade(const Scene& scene, const Tracer& tracer, const SurfacePoint& sp, const a2::ShadingInput& surface,
+            const a2::LightInput& light, bool castShadow) const {
     if (glm::dot(sp.geometricNormal, light.l) <= 0.0f) return Rgb(0.0f);  // the surface itself blocks it
-    if (castShadow && tracer.occluded(a2::shadowRay(sp, light.l, light.distance))) return Rgb(0.0f);
-    return a2::blinnPhong(surface, light);
+    if (!castShadow) return a2::blinnPhong(surface, light);
+    const Ray shadow = a2::shadowRay(sp, light.l, light.distance);
+    if (!filtered_) return tracer.occluded(shadow) ? Rgb(0.0f) : a2::blinnPhong(surface, light);
+    const Rgb through = filteredShadowTransmittance(scene, tracer, shadow, Media{});
+    return isBlack(through) ? Rgb(0.0f) : through * a2::blinnPhong(surface, light);
   }
 
   Camera camera_;
   int lightSamples_ = 16;
+  bool filtered_ = false;
   std::unique_ptr<Accelerator> student_;
 };
 
@@ -117,6 +127,9 @@ TechniqueInfo raycastTechnique() {
           ParamDecl::choice("intersection", "auto", {"auto", "student", "framework"},
                             "student: brute force with your A2.2/A2.3 tests; framework: the chosen accelerator; "
                             "auto: student with -a none, else framework"),
+          ParamDecl::choice("shadows", "filtered", {"filtered", "opaque"},
+                            "filtered: shadow rays pass through transmissive surfaces, tinted by them and absorbed "
+                            "inside (Beer-Lambert); opaque: every surface blocks light"),
       },
       []() -> std::unique_ptr<Technique> { return std::make_unique<Raycast>(); },
   };

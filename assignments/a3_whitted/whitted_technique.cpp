@@ -79,7 +79,8 @@ TechniqueInfo whittedTechnique() {
           ParamDecl::choice("fresnel", "exact", {"exact", "schlick"},
                             "exact: the Fresnel equations for unpolarised light; schlick: Schlick's approximation"),
           ParamDecl::choice("shadows", "filtered", {"filtered", "opaque"},
-                            "filtered: shadow rays pass through transmissive surfaces, tinted by them; opaque: "
+                            "filtered: shadow rays pass through transmissive surfaces, tinted by them and absorbed "
+                            "inside (Beer-Lambert); opaque: "
                             "every surface blocks light"),
           ParamDecl::integer("light_samples", 16, 1, 1024, "shadow-ray samples per area light per pixel sample"),
       },

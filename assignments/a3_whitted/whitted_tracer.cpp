@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "render/ray_offset.h"
+#include "render/shadow_transmittance.h"
 #include "render/technique.h"
 
 namespace ll::a3 {
@@ -118,24 +119,8 @@ Rgb WhittedTracer::shadowTransmittance(const Ray& shadow, const Surface& s) cons
   if (!settings_.filteredShadows || !transmissive_) {
     if (tracer_.occluded(shadow)) through = Rgb(0.0f);
   } else {
-    // Through transmissive surfaces, tinted by their transmission colour (no bending: a shadow ray has
-    // a fixed end). At most 16 surfaces, then the light counts as blocked.
-    Ray r = shadow;
-    for (int crossings = 0;; ++crossings) {
-      Hit hit;
-      if (!tracer_.intersect(r, hit, RayKind::Shadow)) break;
-      const Material& m = scene_.materialOf(hit.prim);
-      if (!m.transmits() || crossings == 16) {
-        through = Rgb(0.0f);
-        break;
-      }
-      through *= m.transmission;
-      const SurfacePoint sp = scene_.surfacePoint(r, hit);
-      const float travelled = glm::length(sp.position - r.origin);
-      r.origin = offsetRayOrigin(sp.position, faceTowards(sp.geometricNormal, r.dir));
-      r.tmax = std::max(0.0f, r.tmax - travelled);
-      if (!(r.tmax > 0.0f)) break;
-    }
+    // Through transmissive surfaces, tinted by them and absorbed by the media between (Beer-Lambert).
+    through = filteredShadowTransmittance(scene_, tracer_, shadow, s.path.media);
   }
   if (node >= 0) tree_->nodes[static_cast<size_t>(node)].shadowTransmittance = through;
   return through;

@@ -50,7 +50,7 @@ struct WhittedSettings {
   float minThroughput = 1e-3f;   // rays weighing less in the pixel are not traced
   bool schlick = false;          // Schlick's approximation instead of the exact Fresnel equations
   int lightSamples = 16;         // shadow rays per area light
-  bool filteredShadows = true;   // shadow rays pass through transmissive surfaces, tinted
+  bool filteredShadows = true;   // shadow rays pass through transmissive surfaces, tinted and absorbed
 };
 
 // Schlick's approximation of the unpolarised Fresnel reflectance (framework

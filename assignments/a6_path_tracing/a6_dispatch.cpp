@@ -28,4 +28,19 @@ bool russianRoulette(Rgb& throughput, float u) {
   return f(throughput, u);
 }
 
+float ggxDistribution(const Vec3& h, float alpha) {
+  static const tasks::TaskFunction<decltype(ggxDistribution)> f("A6.4", "ggxDistribution");
+  return f(h, alpha);
+}
+
+float smithMasking(const Vec3& w, float alpha) {
+  static const tasks::TaskFunction<decltype(smithMasking)> f("A6.4", "smithMasking");
+  return f(w, alpha);
+}
+
+Vec3 sampleGgxVisibleNormal(const Vec3& wo, float alpha, Vec2 u) {
+  static const tasks::TaskFunction<decltype(sampleGgxVisibleNormal)> f("A6.4", "sampleGgxVisibleNormal");
+  return f(wo, alpha, u);
+}
+
 }  // namespace ll::a6

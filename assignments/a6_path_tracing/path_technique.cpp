@@ -98,7 +98,9 @@ class PathTracing final : public PixelTechnique {
       // With light sampling only, a last smooth bounce could add nothing: no ray for it.
       if (!next->delta && strategy_ == Strategy::Light && bounce + 1 >= maxDepth_) break;
       throughput *= next->weight;
-      deltaBounce = next->delta;
+      // No light sample covers a delta direction or one through the surface (A6.2 lights only the front):
+      // an emitter found there counts in full.
+      deltaBounce = next->delta || next->transmitted;
       bsdfPdf = next->pdf;
       if (next->transmitted) media = behind;
       if (bounce + 1 >= rrDepth_ && !a6::russianRoulette(throughput, rng.uniform())) break;
@@ -128,7 +130,7 @@ TechniqueInfo pathTechnique() {
       "MIS, Russian roulette, every material and light; the ground truth the other techniques are measured against",
       EffectSet{Effect::DirectLighting, Effect::HardShadows, Effect::SoftShadows, Effect::MirrorReflection,
                 Effect::Refraction, Effect::GlossyHighlights, Effect::DiffuseInterreflection, Effect::Textures,
-                Effect::Emission},
+                Effect::Emission, Effect::GlossyReflection},
       10,
       {
           ParamDecl::integer("max_depth", 16, 0, 256,

@@ -13,6 +13,7 @@ const char* effectName(Effect e) {
     case Effect::DiffuseInterreflection: return "diffuse-interreflection";
     case Effect::Textures: return "textures";
     case Effect::Emission: return "emission";
+    case Effect::GlossyReflection: return "glossy-reflection";
   }
   return "?";
 }

@@ -18,8 +18,9 @@ enum class Effect : uint32_t {
   DiffuseInterreflection = 1u << 6,  // light bouncing between diffuse surfaces
   Textures = 1u << 7,                // a material with a texture
   Emission = 1u << 8,                // visible emissive surfaces
+  GlossyReflection = 1u << 9,        // a rough metal or rough glass: the scene reflected blurred (microfacet BSDF)
 };
-constexpr int kEffectCount = 9;
+constexpr int kEffectCount = 10;
 
 class EffectSet {
  public:

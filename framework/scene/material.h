@@ -1,5 +1,13 @@
-// Materials of the scene model: the lecture's Blinn-Phong terms plus mirror,
-// dielectric and emission. All colours are linear RGB in [0, inf).
+// Materials of the scene model: "Material = BRDF". A material names its
+// scattering model (`bsdf` in a scene file, data/scenes/README.md): the
+// lecture's Blinn-Phong terms plus mirror, dielectric and emission (the
+// default, as scenes always had it), lambert, conductor (a GGX microfacet
+// metal), dielectric (smooth glass) or rough-dielectric. The path tracer
+// evaluates the model itself; the rasterizer, ray casting and Whitted see
+// every model through the Blinn-Phong fields below, which the loader fills
+// with the model's local and specular limit (a metal: its Fresnel colour at
+// normal incidence as mirror and highlight). All colours are linear RGB in
+// [0, inf).
 #pragma once
 
 #include <memory>
@@ -22,8 +30,18 @@ struct Texture {
   Rgb eval(Vec2 uv) const;
 };
 
+enum class BsdfModel { BlinnPhong, Lambert, Conductor, Dielectric, RoughDielectric };
+
+// Below this GGX alpha a microfacet surface is treated as smooth (a delta lobe).
+inline constexpr float kSmoothRoughness = 1e-3f;
+
 struct Material {
   std::string name;
+  BsdfModel model = BsdfModel::BlinnPhong;
+  float roughness = 0.0f;  // GGX (Trowbridge-Reitz) alpha of conductor and rough-dielectric, in [0, 1]
+  Rgb eta{1.0f};           // conductor: real part n of the complex index n + ik (per channel)
+  Rgb k{0.0f};             // conductor: extinction k
+  std::string metal;       // conductor: the named metal eta and k were read from ("" when given)
   Rgb ka{0.0f};            // ambient reflectance
   Rgb kd{0.0f};            // diffuse reflectance (albedo)
   Rgb ks{0.0f};            // specular reflectance of the Blinn-Phong highlight
@@ -40,6 +58,10 @@ struct Material {
   bool reflectsMirror() const { return !isBlack(mirror); }
   bool transmits() const { return !isBlack(transmission); }
   bool glossy() const { return !isBlack(ks); }
+  // A rough microfacet lobe: glossy reflection of the whole scene, which only `path` simulates.
+  bool glossyScattering() const {
+    return (model == BsdfModel::Conductor || model == BsdfModel::RoughDielectric) && roughness >= kSmoothRoughness;
+  }
 };
 
 }  // namespace ll

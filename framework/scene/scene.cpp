@@ -61,6 +61,7 @@ EffectSet analyseEffects(const Scene& s) {
     if (m.reflectsMirror()) e.add(Effect::MirrorReflection);
     if (m.transmits()) e.add(Effect::Refraction);
     if (m.glossy() && (hasLights || hasAreaLights)) e.add(Effect::GlossyHighlights);
+    if (m.glossyScattering()) e.add(Effect::GlossyReflection);
     if (m.texture.kind != Texture::Kind::None) e.add(Effect::Textures);
     if (m.emits()) e.add(Effect::Emission);
     if (!isBlack(m.kd) || m.texture.kind == Texture::Kind::Checker) diffuse = true;

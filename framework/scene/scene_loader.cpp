@@ -5,14 +5,17 @@
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/error.h"
 #include "core/files.h"
+#include "scene/conductor_fresnel.h"
 #include "scene/json_document.h"
 #include "scene/mesh_file.h"
+#include "scene/named_metals.h"
 #include "scene/scene_limits.h"
 
 namespace ll {
@@ -90,21 +93,76 @@ Texture parseTexture(const JsonNode& mat, const std::string& baseDir) {
   return tex;
 }
 
+// The local model's stand-ins for a conductor (rasterizer, ray casting, Whitted): its Fresnel colour at normal
+// incidence as mirror and Blinn-Phong highlight, the highlight's exponent matched to the roughness
+// (p = 2 / alpha^2 - 2, Walter et al. 2007), capped for a smooth metal.
+void conductorLocalLimit(Material& m) {
+  const Rgb f0 = conductorNormalReflectance(m.eta, m.k);
+  m.mirror = f0;
+  m.ks = f0;
+  m.shininess = m.roughness >= kSmoothRoughness ? std::clamp(2.0f / (m.roughness * m.roughness) - 2.0f, 1.0f, 1e4f)
+                                                : 1e4f;
+}
+
 Material parseMaterial(const JsonNode& n, const std::string& name, const std::string& baseDir) {
-  n.allowOnly({"ka", "kd", "ks", "shininess", "mirror", "transmission", "ior", "absorption", "emission",
-               "texture"});
   Material m;
   m.name = name;
-  m.ka = n.color("ka", Rgb(0.0f));
-  m.kd = n.color("kd", Rgb(0.0f));
-  m.ks = n.color("ks", Rgb(0.0f));
-  m.shininess = n.number("shininess", 1.0f, 0.0f, 1e6f);
-  m.mirror = n.color("mirror", Rgb(0.0f));
-  m.transmission = n.color("transmission", Rgb(0.0f));
-  m.ior = n.number("ior", 1.0f, 1e-3f, 100.0f);
-  m.absorption = n.color("absorption", Rgb(0.0f));
-  m.emission = n.color("emission", Rgb(0.0f));
-  m.texture = parseTexture(n, baseDir);
+  const std::string bsdf = n.has("bsdf") ? n.string("bsdf") : "blinn-phong";
+  if (bsdf == "blinn-phong") {
+    n.allowOnly({"ka", "kd", "ks", "shininess", "mirror", "transmission", "ior", "absorption", "emission", "texture",
+                 "bsdf"});
+    m.model = BsdfModel::BlinnPhong;
+    m.ka = n.color("ka", Rgb(0.0f));
+    m.kd = n.color("kd", Rgb(0.0f));
+    m.ks = n.color("ks", Rgb(0.0f));
+    m.shininess = n.number("shininess", 1.0f, 0.0f, 1e6f);
+    m.mirror = n.color("mirror", Rgb(0.0f));
+    m.transmission = n.color("transmission", Rgb(0.0f));
+    m.ior = n.number("ior", 1.0f, 1e-3f, 100.0f);
+    m.absorption = n.color("absorption", Rgb(0.0f));
+    m.emission = n.color("emission", Rgb(0.0f));
+    m.texture = parseTexture(n, baseDir);
+  } else if (bsdf == "lambert") {
+    n.allowOnly({"bsdf", "ka", "kd", "emission", "texture"});
+    m.model = BsdfModel::Lambert;
+    m.ka = n.color("ka", Rgb(0.0f));
+    m.kd = n.color("kd", Rgb(0.0f));
+    m.emission = n.color("emission", Rgb(0.0f));
+    m.texture = parseTexture(n, baseDir);
+  } else if (bsdf == "conductor") {
+    n.allowOnly({"bsdf", "metal", "eta", "k", "roughness"});
+    m.model = BsdfModel::Conductor;
+    m.roughness = n.number("roughness", 0.0f, 0.0f, 1.0f);
+    if (n.has("metal")) {
+      if (n.has("eta") || n.has("k")) n.child("metal").fail("give either \"metal\" or \"eta\" and \"k\", not both");
+      m.metal = n.string("metal");
+      const std::optional<MetalIndex> metal = namedMetal(m.metal);
+      if (!metal) n.child("metal").fail("unknown metal '" + m.metal + "' (allowed: " + joinNames(metalNames()) + ")");
+      m.eta = metal->eta;
+      m.k = metal->k;
+    } else {
+      if (!n.has("eta") || !n.has("k"))
+        n.fail("a conductor needs \"metal\" (" + joinNames(metalNames()) + ") or both \"eta\" and \"k\"");
+      m.eta = n.color("eta", Rgb(1.0f));
+      m.k = n.color("k", Rgb(0.0f));
+      if (minComponent(m.eta) <= 0.0f) n.child("eta").fail("eta must be > 0 in every channel");
+    }
+    conductorLocalLimit(m);
+  } else if (bsdf == "dielectric" || bsdf == "rough-dielectric") {
+    const bool rough = bsdf == "rough-dielectric";
+    if (rough)
+      n.allowOnly({"bsdf", "ior", "absorption", "transmission", "roughness"});
+    else
+      n.allowOnly({"bsdf", "ior", "absorption", "transmission"});
+    m.model = rough ? BsdfModel::RoughDielectric : BsdfModel::Dielectric;
+    m.roughness = rough ? n.number("roughness", 0.1f, 0.0f, 1.0f) : 0.0f;
+    m.transmission = n.color("transmission", Rgb(1.0f));
+    m.ior = n.number("ior", 1.5f, 1e-3f, 100.0f);
+    m.absorption = n.color("absorption", Rgb(0.0f));
+  } else {
+    n.child("bsdf").fail("unknown bsdf '" + bsdf +
+                         "' (allowed: blinn-phong, lambert, conductor, dielectric, rough-dielectric)");
+  }
   return m;
 }
 
