@@ -49,7 +49,7 @@ class Raycast final : public PixelTechnique {
     const Scene& scene = ctx.scene;
     Ray ray = a2::cameraRay(camera_, s.position.x, s.position.y);
     Hit hit;
-    if (!tracer.intersect(ray, hit, RayKind::Camera)) return scene.background;
+    if (!tracer.intersect(ray, hit, RayKind::Camera)) return scene.environment.radiance(glm::normalize(ray.dir));
     SurfacePoint sp = scene.surfacePoint(ray, hit);
     const Material& m = *sp.material;
     const Vec3 v = -glm::normalize(ray.dir);

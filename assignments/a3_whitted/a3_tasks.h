@@ -44,7 +44,7 @@ FresnelTerms fresnelDielectric(float cosI, float n1, float n2);
 // trace(p, d, step)): stop (return black) when the path is too deep or
 // carries too little weight (tracer.maxDepth(), tracer.minThroughput());
 // otherwise find the hit with tracer.intersect(); on a miss return the
-// background; on a hit return emitted + local (tracer.emitted, tracer.local)
+// sky it sees, tracer.background(ray); on a hit return emitted + local (tracer.emitted, tracer.local)
 // plus, where the material calls for it, the reflected and transmitted
 // radiance, each traced with tracer.trace() and weighted as the lecture
 // writes it (mirror reflectance; for dielectrics the Fresnel reflectance F

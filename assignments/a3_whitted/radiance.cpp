@@ -9,7 +9,7 @@ Rgb radiance(const WhittedTracer& tracer, const Ray& ray, const PathState& path)
 #if LIGHTLAB_SOLUTION  // A3.4
   if (path.depth > tracer.maxDepth() || maxComponent(path.throughput) < tracer.minThroughput()) return Rgb(0.0f);
   const std::optional<Surface> s = tracer.intersect(ray, path);
-  if (!s) return tracer.background();
+  if (!s) return tracer.background(ray);
   const Material& m = s->material();
   Rgb l = tracer.emitted(*s) + tracer.local(*s);
   const Vec3 p = s->sp.position;

@@ -69,7 +69,8 @@ class WhittedTracer {
 
   // The closest hit of `ray` (unit direction), counted as a ray of path.kind.
   std::optional<Surface> intersect(const Ray& ray, const PathState& path) const;
-  Rgb background() const { return scene_.background; }
+  // What `ray` sees when it leaves the scene: the sky in its direction.
+  Rgb background(const Ray& ray) const { return scene_.environment.radiance(glm::normalize(ray.dir)); }
   // Emission of the surface towards the ray (emitters emit on their front side).
   Rgb emitted(const Surface& s) const;
   // The lecture's local term: ka Ia + sum over lights of kd (I/r^2) max(0, n.l)

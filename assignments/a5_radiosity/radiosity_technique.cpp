@@ -86,7 +86,8 @@ class Radiosity final : public PixelTechnique {
       for (const auto& [id, what] : solved_->missingTasks) reportMissingTask(id.c_str(), what.c_str());
     const Ray ray = referenceCameraRay(camera_, *frame_, s.position.x, s.position.y);
     Hit hit;
-    if (!tracer.intersect(ray, hit, RayKind::Camera)) return ctx.scene.background;  // (over the patches)
+    if (!tracer.intersect(ray, hit, RayKind::Camera))  // (over the patches)
+      return ctx.scene.environment.radiance(glm::normalize(ray.dir));
     const a5::PatchMesh& mesh = patches_->mesh;
     const uint32_t patch = mesh.primPatch[hit.prim];  // (a quad patch is two triangles)
     if (glm::dot(mesh.patches[patch].normal, ray.dir) >= 0.0f) return Rgb(0.0f);  // the back of a patch: not solved

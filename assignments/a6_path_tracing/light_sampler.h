@@ -26,23 +26,37 @@ struct LightSample {
   bool castShadow = true;  // false: nothing can stand between this light and a surface (no shadow ray needed)
 };
 
-// Lights chosen uniformly (each point, directional and area light with
-// probability 1 / count), area lights sampled uniformly by area.
+// Lights chosen uniformly (each point, directional and area light, and the
+// sky when it is not black, with probability 1 / count), area lights
+// sampled uniformly by area. The sky (scene/environment.h) is the lecture's
+// big sphere around the scene: a direction w from its own distribution
+// becomes an area sample on a sphere of radius kSkyDistance around the
+// shading point, y = x + kSkyDistance w with normal -w, whose density per
+// area is pdf(w) / kSkyDistance^2 -- so A6.2's area-light code computes the
+// sky's term unchanged (the solid-angle density it converts back is pdf(w)).
 class LightSampler {
  public:
   explicit LightSampler(const Scene& scene);
   bool empty() const { return count_ == 0; }
-  // uChoice, u uniform in [0,1). Precondition: !empty().
-  LightSample sample(float uChoice, Vec2 u) const;
+  // uChoice, u uniform in [0,1); from: the shading point (the sky's sample is placed around it).
+  // Precondition: !empty().
+  LightSample sample(float uChoice, Vec2 u, const Vec3& from) const;
   // Density over solid angle with which sample() produces the point of
   // emissive primitive `prim` seen at `distance` under cos(theta_y) =
   // cosLight (> 0) from the shading point; 0 if prim belongs to no area light.
   float pdfSolidAngle(uint32_t prim, float distance, float cosLight) const;
+  // Density over solid angle with which sample() produces the sky in unit direction dir; 0 without a sky light.
+  float pdfSky(const Vec3& dir) const;
+  bool hasSky() const { return sky_; }
 
+  // How far the sky's sample points are placed: beyond any scene (coordinates stay within 1e8,
+  // scene/scene_limits.h), while kSkyDistance^2 stays far from float overflow.
+  static constexpr float kSkyDistance = 1e10f;
  private:
   const Scene& scene_;
   std::vector<int> areaLightOfObject_;  // object index -> area light index, or -1
   size_t count_ = 0;
+  bool sky_ = false;  // the last choice is the sky
 };
 
 // Whether nothing blocks the segment from x (leaving on wi's side) along

@@ -11,7 +11,9 @@
 // light and BSDF sampling by the power heuristic; `light` takes direct light
 // only from light samples, `bsdf` only from paths that hit an emitter (point
 // and directional lights then contribute nothing: a random direction never
-// hits a point). Ambient light (ka Ia) is a local-model device and is not
+// hits a point). The sky (the scene's background, a colour or an HDR image)
+// is a light like the others: sampled by next-event estimation and weighted
+// by MIS where a path escapes. Ambient light (ka Ia) is a local-model device and is not
 // used. Framework code: students write the functions in a6_tasks.h.
 #include <memory>
 #include <optional>
@@ -55,8 +57,13 @@ class PathTracing final : public PixelTechnique {
     float bsdfPdf = 0.0f;     // the density of the last smooth bounce, for MIS at an emitter it hits
     for (int bounce = 0;; ++bounce) {
       Hit hit;
-      if (!tracer.intersect(ray, hit, kind)) {
-        radiance += throughput * scene.background;
+      if (!tracer.intersect(ray, hit, kind)) {  // the sky, weighted by MIS against its light samples
+        float weight = 1.0f;
+        if (!deltaBounce && lights_->hasSky()) {
+          if (strategy_ == Strategy::Light) weight = 0.0f;
+          if (strategy_ == Strategy::Mis) weight = a6::powerHeuristic(bsdfPdf, lights_->pdfSky(ray.dir));
+        }
+        radiance += throughput * scene.environment.radiance(ray.dir) * weight;
         break;
       }
       const Rgb sigma = media.absorption(scene);  // Beer-Lambert along the segment just travelled
@@ -88,7 +95,7 @@ class PathTracing final : public PixelTechnique {
       const a6::Bsdf bsdf(m, m.diffuse(sp.uv), x, n1, n2);
 
       if (bsdf.hasSmoothLobes() && strategy_ != Strategy::Bsdf && !lights_->empty()) {
-        const a6::LightSample light = lights_->sample(rng.uniform(), rng.uniform2());
+        const a6::LightSample light = lights_->sample(rng.uniform(), rng.uniform2(), x.position);
         radiance += throughput * a6::nextEventEstimate(x, light, bsdf, tracer, strategy_ == Strategy::Mis);
       }
       const float uLobe = rng.uniform();
@@ -130,7 +137,7 @@ TechniqueInfo pathTechnique() {
       "MIS, Russian roulette, every material and light; the ground truth the other techniques are measured against",
       EffectSet{Effect::DirectLighting, Effect::HardShadows, Effect::SoftShadows, Effect::MirrorReflection,
                 Effect::Refraction, Effect::GlossyHighlights, Effect::DiffuseInterreflection, Effect::Textures,
-                Effect::Emission, Effect::GlossyReflection},
+                Effect::Emission, Effect::GlossyReflection, Effect::SkyLight},
       10,
       {
           ParamDecl::integer("max_depth", 16, 0, 256,

@@ -14,6 +14,7 @@ const char* effectName(Effect e) {
     case Effect::Textures: return "textures";
     case Effect::Emission: return "emission";
     case Effect::GlossyReflection: return "glossy-reflection";
+    case Effect::SkyLight: return "sky-light";
   }
   return "?";
 }

@@ -19,8 +19,9 @@ enum class Effect : uint32_t {
   Textures = 1u << 7,                // a material with a texture
   Emission = 1u << 8,                // visible emissive surfaces
   GlossyReflection = 1u << 9,        // a rough metal or rough glass: the scene reflected blurred (microfacet BSDF)
+  SkyLight = 1u << 10,               // the background lights the scene (a sky colour or HDR image around it)
 };
-constexpr int kEffectCount = 10;
+constexpr int kEffectCount = 11;
 
 class EffectSet {
  public:

@@ -9,6 +9,7 @@
 #include "core/ray.h"
 #include "scene/camera.h"
 #include "scene/effects.h"
+#include "scene/environment.h"
 #include "scene/geometry.h"
 #include "scene/material.h"
 
@@ -64,7 +65,9 @@ class Scene {
  public:
   std::string path;  // file it was loaded from, for messages
   Camera camera;
-  Rgb background{0.0f};
+  // The sky: what a ray that leaves the scene sees, and (for the path tracer) a light.
+  Environment environment;
+  Rgb background{0.0f};  // environment.average(): a flat stand-in where a technique cannot look the sky up
   Rgb ambient{0.0f};  // Ia of the lecture's ambient term (local techniques only)
   std::vector<Material> materials;
   std::vector<Light> lights;

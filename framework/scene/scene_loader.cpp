@@ -385,6 +385,25 @@ Camera parseCamera(const JsonNode& n) {
   return c;
 }
 
+// "background": [r, g, b] (a constant sky) or {"image": "sky.hdr", "strength": 1, "rotation_deg": 0}.
+Environment parseBackground(const JsonNode& root, const std::string& baseDir) {
+  if (!root.has("background")) return Environment(Rgb(0.0f));
+  const JsonNode n = root.child("background");
+  if (!n.json().is_object()) return Environment(root.color("background", Rgb(0.0f)));
+  n.allowOnly({"image", "strength", "rotation_deg"});
+  const JsonNode image = n.child("image");
+  if (!image.json().is_string()) image.fail(image.what() + " must be a file name (an equirectangular .hdr or .pfm)");
+  const std::string file = (fs::path(baseDir) / image.json().get<std::string>()).lexically_normal().string();
+  std::error_code ec;
+  if (!fs::exists(file, ec)) image.fail("sky image not found: " + file);
+  const float strength = n.number("strength", 1.0f, 0.0f, 1e6f);
+  const float rotation = n.number("rotation_deg", 0.0f, -360.0f, 360.0f);
+  auto sky = std::make_shared<Image>(loadImage(file));
+  if (sky->width() < 2 || sky->height() < 1)
+    image.fail("sky image " + file + " is too small (allowed: at least 2 x 1 pixels, 2:1 equirectangular)");
+  return Environment(std::move(sky), strength, rotation);
+}
+
 Scene parseJsonScene(const std::string& text, const std::string& file, const std::string& baseDir) {
   const JsonDocument doc(text, file);
   const JsonNode root(doc, doc.root(), "", "scene");
@@ -392,7 +411,8 @@ Scene parseJsonScene(const std::string& text, const std::string& file, const std
   Scene scene;
   scene.path = file;
   scene.camera = parseCamera(root.child("camera"));
-  scene.background = root.color("background", Rgb(0.0f));
+  scene.environment = parseBackground(root, baseDir);
+  scene.background = scene.environment.average();
   scene.ambient = root.color("ambient", Rgb(0.0f));
 
   std::map<std::string, uint32_t> materialIds;

@@ -91,7 +91,7 @@ TEST(SceneLoader, EveryBundledSceneLoads) {
     EXPECT_GT(s.geometry.primitiveCount(), 0u);
     EXPECT_FALSE(s.objects.empty());
     EXPECT_FALSE(s.materials.empty());
-    EXPECT_TRUE(s.effects.has(Effect::DirectLighting)) << "every bundled scene is lit";
+    EXPECT_TRUE(s.effects.has(Effect::DirectLighting) || s.effects.has(Effect::SkyLight)) << "every bundled scene is lit";
     EXPECT_GT(s.camera.width, 0);
     EXPECT_GT(s.camera.fovYDeg, 0.0f);
     EXPECT_LT(s.camera.fovYDeg, 180.0f);

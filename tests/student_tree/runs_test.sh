@@ -52,6 +52,10 @@ done
 build/lightlab --quiet render data/scenes/cornell_box.json -t path --width 32 --height 32 --spp 2 --set max_depth=3 \
   -o "$work/a6.png" 2>"$work/a6.txt"
 missing "$work/a6.txt" A6.1 A6.2 A6.3
+# A6.4 (GGX) runs only for rough metals and rough glass, which the Cornell box has none of.
+build/lightlab --quiet render data/scenes/metal_spheres.json -t path --width 32 --height 18 --spp 2 --set max_depth=3 \
+  -o "$work/a6_metals.png" 2>"$work/a6_metals.txt"
+missing "$work/a6_metals.txt" A6.4
 # Grading the untouched tree: every task "not implemented", 0 points, a normal exit.
 for a in A1 A2 A3 A4 A5 A6; do
   build/lightlab --quiet grade "$a" --format text,gradescope --report "$work/grade/$a" > "$work/grade_$a.txt" 2>&1 ||
