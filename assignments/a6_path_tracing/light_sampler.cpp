@@ -45,6 +45,7 @@ LightSample LightSampler::sample(float uChoice, Vec2 u, const Vec3& from) const 
   s.normal = p.normal;
   s.emission = p.emission;
   s.pdf = choice / light.area;
+  s.material = &scene_.materials[scene_.objects[light.object].material];
   s.castShadow = light.canBeOccluded;
   return s;
 }

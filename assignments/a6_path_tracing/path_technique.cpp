@@ -6,7 +6,8 @@
 //
 // At every vertex: the emission the path found (weighted by MIS against
 // light sampling), one light sample by next-event estimation (A6.2), then a
-// direction from the BSDF (cosine-weighted for the diffuse lobe, A6.1), and
+// direction from the BSDF (cosine-weighted for the diffuse lobe, A6.1;
+// visible GGX normals for rough metals and rough glass, A6.4), and
 // after rr_depth bounces Russian roulette (A6.3). Strategies: `mis` combines
 // light and BSDF sampling by the power heuristic; `light` takes direct light
 // only from light samples, `bsdf` only from paths that hit an emitter (point
@@ -21,6 +22,7 @@
 #include "a6_tasks.h"
 #include "bsdf.h"
 #include "light_sampler.h"
+#include "spectral.h"
 #include "render/media.h"
 #include "render/ray_offset.h"
 #include "render/technique.h"
@@ -42,6 +44,11 @@ class PathTracing final : public PixelTechnique {
     rrDepth_ = ctx.params.getInt("rr_depth");
     const std::string strategy = ctx.params.getChoice("strategy");
     strategy_ = strategy == "light" ? Strategy::Light : strategy == "bsdf" ? Strategy::Bsdf : Strategy::Mis;
+    if (ctx.params.getBool("spectral")) {
+      if (!spectral_) spectral_.emplace();
+    } else {
+      spectral_.reset();
+    }
   }
 
  protected:
@@ -53,6 +60,20 @@ class PathTracing final : public PixelTechnique {
     RayKind kind = RayKind::Camera;
     Rgb radiance(0.0f), throughput(1.0f);
     Media media;
+    // Spectral: the three wavelengths this path carries in its channels (spectral.h).
+    const a6::Wavelengths wl = spectral_ ? a6::Wavelengths::sample(rng.uniform()) : a6::Wavelengths{};
+    bool heroOnly = false;  // a dispersive refraction left only the hero wavelength
+    const auto colour = [&](const Rgb& rgb) { return spectral_ ? spectral_->upsample(rgb, wl) : rgb; };
+    const auto mediumIor = [&](const Media& md) {
+      if (!spectral_ || md.count == 0) return md.ior(scene);
+      return scene.materials[md.ids[static_cast<size_t>(md.count - 1)]].iorAt(wl.nm[0]);
+    };
+    const auto dispersive = [&](const Media& md) {
+      return md.count > 0 && scene.materials[md.ids[static_cast<size_t>(md.count - 1)]].dispersive();
+    };
+    const auto mediumAbsorption = [&](const Media& md) {
+      return md.count == 0 ? Rgb(0.0f) : colour(md.absorption(scene));
+    };
     bool deltaBounce = true;  // the last direction had no density (camera ray, mirror, glass): no MIS
     float bsdfPdf = 0.0f;     // the density of the last smooth bounce, for MIS at an emitter it hits
     for (int bounce = 0;; ++bounce) {
@@ -63,13 +84,16 @@ class PathTracing final : public PixelTechnique {
           if (strategy_ == Strategy::Light) weight = 0.0f;
           if (strategy_ == Strategy::Mis) weight = a6::powerHeuristic(bsdfPdf, lights_->pdfSky(ray.dir));
         }
-        radiance += throughput * scene.environment.radiance(ray.dir) * weight;
+        radiance += throughput * colour(scene.environment.radiance(ray.dir)) * weight;
         break;
       }
-      const Rgb sigma = media.absorption(scene);  // Beer-Lambert along the segment just travelled
+      const Rgb sigma = mediumAbsorption(media);  // Beer-Lambert along the segment just travelled
       if (!isBlack(sigma)) throughput *= glm::exp(-sigma * hit.t);
       const SurfacePoint sp = scene.surfacePoint(ray, hit);
-      const Material& m = *sp.material;
+      const Material& sceneMaterial = *sp.material;
+      std::optional<Material> spectralMaterial;
+      if (spectral_) spectralMaterial = spectral_->materialAt(sceneMaterial, sp.uv, wl);
+      const Material& m = spectral_ ? *spectralMaterial : sceneMaterial;
       a6::ShadingPoint x;
       x.position = sp.position;
       x.wo = -ray.dir;
@@ -89,13 +113,16 @@ class PathTracing final : public PixelTechnique {
       if (bounce >= maxDepth_) break;
 
       // The media on both sides, for a dielectric.
-      const auto id = static_cast<uint32_t>(&m - scene.materials.data());
+      const auto id = static_cast<uint32_t>(&sceneMaterial - scene.materials.data());
       const Media behind = !m.transmits() ? media : front ? media.with(id) : media.without(id);
-      const float n1 = media.ior(scene), n2 = m.transmits() ? (front ? m.ior : behind.ior(scene)) : n1;
-      const a6::Bsdf bsdf(m, m.diffuse(sp.uv), x, n1, n2);
+      const float n1 = mediumIor(media), n2 = m.transmits() ? (front ? m.ior : mediumIor(behind)) : n1;
+      const a6::Bsdf bsdf(m, spectral_ ? m.kd : m.diffuse(sp.uv), x, n1, n2);
 
       if (bsdf.hasSmoothLobes() && strategy_ != Strategy::Bsdf && !lights_->empty()) {
-        const a6::LightSample light = lights_->sample(rng.uniform(), rng.uniform2(), x.position);
+        a6::LightSample light = lights_->sample(rng.uniform(), rng.uniform2(), x.position);
+        if (spectral_)
+          light.emission = spectral_->at(light.material ? light.material->emissionSpectrum.get() : nullptr,
+                                         light.emission, wl);
         radiance += throughput * a6::nextEventEstimate(x, light, bsdf, tracer, strategy_ == Strategy::Mis);
       }
       const float uLobe = rng.uniform();
@@ -105,6 +132,11 @@ class PathTracing final : public PixelTechnique {
       // With light sampling only, a last smooth bounce could add nothing: no ray for it.
       if (!next->delta && strategy_ == Strategy::Light && bounce + 1 >= maxDepth_) break;
       throughput *= next->weight;
+      // A dispersive interface sends each wavelength its own way: only the hero goes on (Wilkie et al. 2014).
+      if (spectral_ && !heroOnly && m.transmits() && (sceneMaterial.dispersive() || dispersive(media))) {
+        throughput = Rgb(3.0f * throughput.r, 0.0f, 0.0f);
+        heroOnly = true;
+      }
       // No light sample covers a delta direction or one through the surface (A6.2 lights only the front):
       // an emitter found there counts in full.
       deltaBounce = next->delta || next->transmitted;
@@ -117,10 +149,11 @@ class PathTracing final : public PixelTechnique {
       ray.dir = next->wi;
       kind = !next->delta ? RayKind::Indirect : next->transmitted ? RayKind::Refraction : RayKind::Reflection;
     }
-    return radiance;
+    return spectral_ ? spectral_->toRgb(radiance, wl) : radiance;
   }
 
  private:
+  std::optional<a6::SpectralContext> spectral_;
   Camera camera_;
   std::optional<CameraFrame> frame_;
   std::optional<a6::LightSampler> lights_;
@@ -143,6 +176,9 @@ TechniqueInfo pathTechnique() {
           ParamDecl::integer("max_depth", 16, 0, 256,
                              "most bounces of a path (0 = what the camera sees emitted, 1 = direct light only)"),
           ParamDecl::integer("rr_depth", 3, 0, 256, "bounces before Russian roulette may end a path"),
+          ParamDecl::boolean("spectral", false,
+                             "hero-wavelength spectral rendering: measured spectra, RGB upsampled (Smits 1999), "
+                             "dispersion; false = RGB"),
           ParamDecl::choice("strategy", "mis", {"mis", "light", "bsdf"},
                             "direct light from: mis = light and BSDF sampling combined; light = light samples only; "
                             "bsdf = only paths that hit an emitter"),

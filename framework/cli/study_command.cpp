@@ -93,6 +93,16 @@ const std::vector<BuiltinStudy>& builtinStudies() {
        {"intersection=framework", "light_samples=4"}, {}, "", 96, 1, 1},
       {"path-spp", "path tracing: samples per pixel (the error falls as 1/spp)", "cornell_box.json",
        "spp=1,4,16,64,256", {"path"}, {}, {}, "", 64, 1, 4096},
+      {"path-strategies",
+       "path tracing: light, BSDF and MIS sampling on copper and aluminium at three roughnesses: one image, "
+       "different noise",
+       "metal_spheres.json", "spp=4,16,64,256", {"path:strategy=light", "path:strategy=bsdf", "path:strategy=mis"},
+       {}, {"strategy=mis"}, "path", 96, 1, 4096},
+      {"spectral",
+       "path tracing the measured Cornell box spectrally (hero wavelengths) against RGB: what spectra change, "
+       "what they cost",
+       "cornell_box_spectral.json", "spp=4,16,64,256", {"path:spectral=true", "path:spectral=false"}, {},
+       {"spectral=true"}, "path", 64, 1, 4096},
       {"ground-truth",
        "ray casting, Whitted and radiosity against path-traced ground truth: what each misses, what it saves",
        "cornell_box.json", "spp=1,4,16,64", {"raycast", "whitted", "radiosity", "path"},
@@ -109,8 +119,25 @@ struct Run {
   ImageError error;
 };
 
+// A curve is a technique, or a technique with parameters of its own: "path:strategy=light" (several
+// joined by ';'), so one study can compare settings of one technique side by side.
+struct Curve {
+  std::string technique;
+  std::vector<std::string> sets;
+};
+Curve parseCurve(const std::string& spec) {
+  Curve c{spec.substr(0, spec.find(':')), {}};
+  if (spec.find(':') == std::string::npos) return c;
+  std::stringstream list(spec.substr(spec.find(':') + 1));
+  for (std::string a; std::getline(list, a, ';');)
+    if (!a.empty()) c.sets.push_back(a);
+  return c;
+}
+
 // One render: the study's settings with `changes` (name=value; "spp" and "accel" are ours).
-Image render(const StudyOptions& o, const std::string& technique, const std::vector<std::string>& changes, Run* run) {
+Image render(const StudyOptions& o, const std::string& curve, const std::vector<std::string>& changes, Run* run) {
+  const Curve parsed = parseCurve(curve);
+  const std::string& technique = parsed.technique;
   std::string accel = o.accelerator;
   int spp = o.spp;
   std::vector<std::string> extra;  // the knob's or the reference's changes: must fit this technique
@@ -138,6 +165,7 @@ Image render(const StudyOptions& o, const std::string& technique, const std::vec
     const std::string name = a.substr(0, a.find('='));
     if (tp.has(name) || ap.has(name)) sets.push_back(a);
   }
+  sets.insert(sets.end(), parsed.sets.begin(), parsed.sets.end());
   sets.insert(sets.end(), extra.begin(), extra.end());
   SceneSetup s = setUpScene(o.scene, technique, accel, sets);
   RenderSettings settings;
@@ -213,7 +241,9 @@ Command addStudyCommand(CLI::App& app, const GlobalOptions& global) {
   for (const BuiltinStudy& b : builtinStudies()) builtinHelp += std::string("\n  ") + b.name + ": " + b.what;
   cmd->add_option("scene", o->scene, "Scene file (.json or .obj), or a built-in study:" + builtinHelp)->required();
   cmd->add_option("--knob", o->knob, "NAME=v1,v2,...: a technique or accelerator parameter, spp, or accel");
-  cmd->add_option("-t,--technique", o->techniques, "Technique(s), comma separated: one curve each")
+  cmd->add_option("-t,--technique", o->techniques,
+                  "Technique(s), comma separated: one curve each; TECHNIQUE:name=value;... gives a curve "
+                  "its own parameters (path:strategy=light)")
       ->delimiter(',')
       ->capture_default_str();
   cmd->add_option("-a,--accel", o->accelerator, "Accelerator")->capture_default_str();
@@ -262,12 +292,22 @@ Command addStudyCommand(CLI::App& app, const GlobalOptions& global) {
     for (const std::string& a : o->sets) {  // every --set is some technique's or the accelerator's
       const std::string name = a.substr(0, a.find('='));
       bool known = ParamSet("accelerator", findAccelerator(o->accelerator).params).has(name);
-      for (const std::string& t : o->techniques) known = known || ParamSet("t", findTechnique(t).params).has(name);
-      if (!known) ParamSet("technique '" + o->techniques.front() + "'", findTechnique(o->techniques.front()).params).assign(a);
+      for (const std::string& t : o->techniques)
+        known = known || ParamSet("t", findTechnique(parseCurve(t).technique).params).has(name);
+      if (!known) {
+        const std::string first = parseCurve(o->techniques.front()).technique;
+        ParamSet("technique '" + first + "'", findTechnique(first).params).assign(a);
+      }
+    }
+    for (const std::string& t : o->techniques) {  // a curve's own parameters are its technique's
+      const Curve c = parseCurve(t);
+      ParamSet tp("technique '" + c.technique + "'", findTechnique(c.technique).params);
+      for (const std::string& a : c.sets) tp.assign(a);
     }
     if (knob != "spp" && knob != "accel")
       for (const std::string& t : o->techniques) {
-        ParamSet tp("technique '" + t + "'", findTechnique(t).params);
+        const std::string name = parseCurve(t).technique;
+        ParamSet tp("technique '" + name + "'", findTechnique(name).params);
         const ParamSet ap("accelerator '" + o->accelerator + "'", findAccelerator(o->accelerator).params);
         if (!tp.has(knob) && !ap.has(knob)) tp.assign(knob + "=" + values.front());  // throws, naming the parameters
       }

@@ -77,6 +77,7 @@ SpectrumTable loadSpectraCsv(const std::string& path) {
 
     if (headerLine == 0) {
       headerLine = lineNo;
+      table.headerLine = lineNo;
       if (cells[0].text != "wavelength_nm")
         throwUserError(
             path, lineNo, cells[0].column,
@@ -207,6 +208,76 @@ Rgb metalNormalReflectance(const Spectrum& n, const Spectrum& k) {
     r[static_cast<size_t>(i)] = ((ni - 1) * (ni - 1) + ki * ki) / ((ni + 1) * (ni + 1) + ki * ki);
   }
   return samplesToRgb(r);
+}
+
+RgbToSpectrum::RgbToSpectrum(const std::string& path) : path_(path) {
+  static constexpr const char* kNames[kBasisCount] = {"white", "cyan",  "magenta", "yellow",
+                                                      "red",   "green", "blue"};
+  SpectrumTable table = loadSpectraCsv(path);
+  std::vector<std::string> missing;
+  for (int b = 0; b < kBasisCount; ++b) {
+    const auto it = std::find(table.names.begin(), table.names.end(), kNames[b]);
+    if (it == table.names.end()) {
+      missing.emplace_back(kNames[b]);
+      continue;
+    }
+    Spectrum& column = table.columns[static_cast<size_t>(it - table.names.begin())];
+    value_[b] = std::move(column.value);
+    if (nm_.empty()) nm_ = std::move(column.nm);
+  }
+  if (!missing.empty())
+    throwUserError(path, table.headerLine, 0,
+                   "an RGB-to-spectrum table needs the columns white, cyan, magenta, yellow, "
+                   "red, green, blue; missing: " +
+                       joinNames(missing));
+}
+
+float RgbToSpectrum::eval(const Rgb& rgb, float lambdaNm) const {
+  // Where lambdaNm falls: rows i0 and i1 = i0 + 1 (equal at and beyond the ends), weight t of i1.
+  size_t i0 = 0, i1 = 0;
+  float t = 0.0f;
+  if (lambdaNm >= nm_.back()) {
+    i0 = i1 = nm_.size() - 1;
+  } else if (lambdaNm > nm_.front()) {
+    i1 = static_cast<size_t>(std::upper_bound(nm_.begin(), nm_.end(), lambdaNm) - nm_.begin());
+    i0 = i1 - 1;
+    t = (lambdaNm - nm_[i0]) / (nm_[i1] - nm_[i0]);
+  }
+  const auto basis = [&](Basis which) {
+    const std::vector<float>& v = value_[which];
+    return v[i0] + t * (v[i1] - v[i0]);
+  };
+
+  // pbrt-v3 SampledSpectrum::FromRGB, SpectrumType::Reflectance (without its 0.94):
+  // min * white + (mid - min) * secondary + (max - mid) * primary.
+  const float r = std::max(rgb.r, 0.0f), g = std::max(rgb.g, 0.0f), b = std::max(rgb.b, 0.0f);
+  float s = 0.0f;
+  if (r <= g && r <= b) {  // red smallest
+    s = r * basis(kWhite);
+    if (g <= b)
+      s += (g - r) * basis(kCyan) + (b - g) * basis(kBlue);
+    else
+      s += (b - r) * basis(kCyan) + (g - b) * basis(kGreen);
+  } else if (g <= r && g <= b) {  // green smallest
+    s = g * basis(kWhite);
+    if (r <= b)
+      s += (r - g) * basis(kMagenta) + (b - r) * basis(kBlue);
+    else
+      s += (b - g) * basis(kMagenta) + (r - b) * basis(kRed);
+  } else {  // blue smallest
+    s = b * basis(kWhite);
+    if (r <= g)
+      s += (r - b) * basis(kYellow) + (g - r) * basis(kGreen);
+    else
+      s += (g - b) * basis(kYellow) + (r - g) * basis(kRed);
+  }
+  return std::max(s, 0.0f);
+}
+
+const RgbToSpectrum& defaultRgbToSpectrum(const std::string& spectraDir) {
+  static const RgbToSpectrum table(spectraDir + "/smits_rgb_to_spectrum.csv");
+  assert(table.path() == spectraDir + "/smits_rgb_to_spectrum.csv");
+  return table;
 }
 
 }  // namespace ll

@@ -24,6 +24,7 @@ struct Spectrum {
 struct SpectrumTable {
   std::vector<std::string> names;
   std::vector<Spectrum> columns;
+  int headerLine = 0;  // 1-based line of the header in the file, for messages
 };
 
 // Reads a table whose header is `wavelength_nm,name1,name2,...` and whose rows
@@ -63,5 +64,54 @@ Rgb reflectanceToRgb(const Spectrum& s);
 // step of reflectanceToRgb, then projected by it: the "Fresnel colour" F0 of
 // a metal, computed spectrally and only then reduced to RGB.
 Rgb metalNormalReflectance(const Spectrum& n, const Spectrum& k);
+
+// RGB-to-spectrum upsampling by B. Smits, "An RGB-to-Spectrum Conversion for
+// Reflectances", Journal of Graphics Tools 4(4), 1999: a linear sRGB
+// colour becomes a smooth spectrum, so a spectral renderer can use materials
+// and lights given in RGB. The spectrum is min(r,g,b) times a white spectrum,
+// plus the gap between the two smaller components times cyan, magenta or
+// yellow (the two larger components' secondary), plus the gap between the two
+// larger ones times red, green or blue (the largest's primary); the seven basis
+// spectra are pbrt-v3's reflectance tables (data/spectra/smits_rgb_to_spectrum.csv,
+// see its README.md), as pbrt-v3's SampledSpectrum::FromRGB combines them for
+// SpectrumType::Reflectance, but WITHOUT pbrt's 0.94 scale factor.
+//
+// What comes back: the tables' white is flat at 1.059-1.063, so projecting
+// eval by reflectanceToRgb (P) gives P(eval(rgb)) ≈ 1.062 rgb: for a grey
+// 1.0618-1.0627 rgb per channel, for the saturated colours of
+// spectrum_test.cpp (RgbToSpectrumRoundTrip) 1.062 rgb within 0.021. Scale
+// eval by 1 / 1.062 (pbrt uses 0.94) where the reflectance's RGB must be kept.
+// Emission: the construction is linear, eval(k rgb) = k eval(rgb) for k >= 0,
+// so radiances above 1 work as they are.
+class RgbToSpectrum {
+ public:
+  // Reads a table with columns wavelength_nm and white, cyan, magenta, yellow,
+  // red, green, blue (other columns are ignored). Throws UserError
+  // "file:line: ..." for what loadSpectraCsv rejects and for missing columns,
+  // naming them.
+  explicit RgbToSpectrum(const std::string& path);
+
+  // The spectrum of rgb at lambdaNm (nm): negative components are taken as 0,
+  // the tables are linear in wavelength between rows and keep their end
+  // values outside them (380-720 nm), and the result is clamped to >= 0 (the
+  // tables dip to -0.0125 in places). Unitless for a reflectance, the unit of
+  // rgb for a radiance.
+  float eval(const Rgb& rgb, float lambdaNm) const;
+
+  const std::string& path() const { return path_; }
+
+ private:
+  enum Basis { kWhite, kCyan, kMagenta, kYellow, kRed, kGreen, kBlue, kBasisCount };
+  std::string path_;
+  std::vector<float> nm_;                  // shared by all columns
+  std::vector<float> value_[kBasisCount];  // indexed by Basis
+};
+
+// The table <spectraDir>/smits_rgb_to_spectrum.csv, read on the first call
+// (thread-safe) and kept. Callers pass ll::spectraDirectory()
+// (scene/named_metals.h); core/ does not depend on scene/. Every call must
+// pass the same directory (asserted). Throws UserError as RgbToSpectrum does;
+// a failed first call is retried by the next.
+const RgbToSpectrum& defaultRgbToSpectrum(const std::string& spectraDir);
 
 }  // namespace ll

@@ -15,6 +15,7 @@
 
 #include "core/image.h"
 #include "core/math.h"
+#include "core/spectrum.h"
 
 namespace ll {
 
@@ -42,6 +43,21 @@ struct Material {
   Rgb eta{1.0f};           // conductor: real part n of the complex index n + ik (per channel)
   Rgb k{0.0f};             // conductor: extinction k
   std::string metal;       // conductor: the named metal eta and k were read from ("" when given)
+  // Measured spectra where the scene gives them (data/spectra); the RGB fields above hold their projection
+  // to linear sRGB (core/spectrum.h), which RGB rendering uses. `path --set spectral=true` uses the spectra.
+  std::shared_ptr<const Spectrum> kdSpectrum;        // diffuse reflectance
+  std::shared_ptr<const Spectrum> emissionSpectrum;  // emitted radiance
+  std::shared_ptr<const Spectrum> etaSpectrum, kSpectrum;  // conductor: n and k of a named metal
+  // Dispersion (Cauchy 1836): n(lambda) = ior + cauchyB * (1 / lambda^2 - 1 / 0.5876^2), lambda in
+  // micrometres, so `ior` is the index at the helium d-line (587.6 nm) that RGB rendering uses. 0 = none.
+  float cauchyB = 0.0f;
+  bool dispersive() const { return cauchyB != 0.0f; }
+  // The index of refraction at wavelength lambdaNm.
+  float iorAt(float lambdaNm) const {
+    if (cauchyB == 0.0f) return ior;
+    const float um = lambdaNm * 1e-3f;
+    return ior + cauchyB * (1.0f / (um * um) - 1.0f / (0.5876f * 0.5876f));
+  }
   Rgb ka{0.0f};            // ambient reflectance
   Rgb kd{0.0f};            // diffuse reflectance (albedo)
   Rgb ks{0.0f};            // specular reflectance of the Blinn-Phong highlight

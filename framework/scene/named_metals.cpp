@@ -27,7 +27,8 @@ MetalIndex readMetal(const std::string& path) {
     if (table.names[i] == "k") k = &table.columns[i];
   }
   if (n == nullptr || k == nullptr) throw UserError(path + ":1: a metal's table needs the columns n and k");
-  return {reflectanceToRgb(*n), reflectanceToRgb(*k), path};
+  return {reflectanceToRgb(*n), reflectanceToRgb(*k), path, std::make_shared<const Spectrum>(*n),
+          std::make_shared<const Spectrum>(*k)};
 }
 
 }  // namespace

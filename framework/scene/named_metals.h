@@ -4,11 +4,13 @@
 // RGB renderer: each spectrum projected to linear sRGB (core/spectrum.h).
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "core/math.h"
+#include "core/spectrum.h"
 
 namespace ll {
 
@@ -16,6 +18,7 @@ struct MetalIndex {
   Rgb eta{1.0f};     // real part n, relative to vacuum
   Rgb k{0.0f};       // extinction
   std::string file;  // the table it came from
+  std::shared_ptr<const Spectrum> etaSpectrum, kSpectrum;  // the measured curves themselves
 };
 
 // The names a scene may use: aluminium, copper, gold, silver.

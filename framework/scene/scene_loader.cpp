@@ -104,6 +104,49 @@ void conductorLocalLimit(Material& m) {
                                                 : 1e4f;
 }
 
+// A colour or a measured spectrum: [r, g, b], or {"spectrum": "file.csv", "column": "name", "scale": 1}
+// (file relative to the scene; data/spectra/README.md). Returns the RGB (the spectrum's projection) and
+// sets `spectrum` for a spectrum.
+Rgb colorOrSpectrum(const JsonNode& n, const std::string& key, Rgb fallback, const std::string& baseDir,
+                    std::shared_ptr<const Spectrum>& spectrum) {
+  if (!n.has(key) || !n.child(key).json().is_object()) return n.color(key, fallback);
+  const JsonNode c = n.child(key);
+  c.allowOnly({"spectrum", "column", "scale"});
+  const JsonNode fileNode = c.child("spectrum");
+  if (!fileNode.json().is_string()) fileNode.fail(fileNode.what() + " must be a file name (a .csv spectral table)");
+  const std::string file = (fs::path(baseDir) / fileNode.json().get<std::string>()).lexically_normal().string();
+  std::error_code ec;
+  if (!fs::exists(file, ec)) fileNode.fail("spectrum file not found: " + file);
+  const SpectrumTable table = loadSpectraCsv(file);
+  const std::string column = c.string("column");
+  const float scale = c.number("scale", 1.0f, 0.0f, 1e6f);
+  for (size_t i = 0; i < table.names.size(); ++i) {
+    if (table.names[i] != column) continue;
+    Spectrum sp = table.columns[i];
+    for (float& v : sp.value) v *= scale;
+    spectrum = std::make_shared<const Spectrum>(std::move(sp));
+    return glm::max(reflectanceToRgb(*spectrum), Rgb(0.0f));
+  }
+  c.child("column").fail("no column '" + column + "' in " + file + " (allowed: " + joinNames(table.names) + ")");
+}
+
+// "ior": a number, or {"cauchy": [n_d, B]}: the index at 587.6 nm and Cauchy's B in square micrometres.
+void parseIor(const JsonNode& n, Material& m, float fallback) {
+  if (!n.has("ior") || !n.child("ior").json().is_object()) {
+    m.ior = n.number("ior", fallback, 1e-3f, 100.0f);
+    return;
+  }
+  const JsonNode c = n.child("ior");
+  c.allowOnly({"cauchy"});
+  const JsonNode ab = c.child("cauchy");
+  if (!ab.json().is_array() || ab.size() != 2) ab.fail(ab.what() + " must be [n_d, B]: the index at 587.6 nm and B in um^2");
+  m.ior = ab.at(0).asNumber();
+  m.cauchyB = ab.at(1).asNumber();
+  if (!(m.ior >= 1e-3f && m.ior <= 100.0f)) ab.at(0).fail("n_d must be within [0.001, 100]");
+  if (!(std::abs(m.cauchyB) <= 1.0f)) ab.at(1).fail("B must be within [-1, 1] um^2 (glass: about 0.004)");
+  if (!(m.iorAt(380.0f) > 1e-3f && m.iorAt(830.0f) > 1e-3f)) ab.fail("the index must stay positive over 380-830 nm");
+}
+
 Material parseMaterial(const JsonNode& n, const std::string& name, const std::string& baseDir) {
   Material m;
   m.name = name;
@@ -113,21 +156,21 @@ Material parseMaterial(const JsonNode& n, const std::string& name, const std::st
                  "bsdf"});
     m.model = BsdfModel::BlinnPhong;
     m.ka = n.color("ka", Rgb(0.0f));
-    m.kd = n.color("kd", Rgb(0.0f));
+    m.kd = colorOrSpectrum(n, "kd", Rgb(0.0f), baseDir, m.kdSpectrum);
     m.ks = n.color("ks", Rgb(0.0f));
     m.shininess = n.number("shininess", 1.0f, 0.0f, 1e6f);
     m.mirror = n.color("mirror", Rgb(0.0f));
     m.transmission = n.color("transmission", Rgb(0.0f));
-    m.ior = n.number("ior", 1.0f, 1e-3f, 100.0f);
+    parseIor(n, m, 1.0f);
     m.absorption = n.color("absorption", Rgb(0.0f));
-    m.emission = n.color("emission", Rgb(0.0f));
+    m.emission = colorOrSpectrum(n, "emission", Rgb(0.0f), baseDir, m.emissionSpectrum);
     m.texture = parseTexture(n, baseDir);
   } else if (bsdf == "lambert") {
     n.allowOnly({"bsdf", "ka", "kd", "emission", "texture"});
     m.model = BsdfModel::Lambert;
     m.ka = n.color("ka", Rgb(0.0f));
-    m.kd = n.color("kd", Rgb(0.0f));
-    m.emission = n.color("emission", Rgb(0.0f));
+    m.kd = colorOrSpectrum(n, "kd", Rgb(0.0f), baseDir, m.kdSpectrum);
+    m.emission = colorOrSpectrum(n, "emission", Rgb(0.0f), baseDir, m.emissionSpectrum);
     m.texture = parseTexture(n, baseDir);
   } else if (bsdf == "conductor") {
     n.allowOnly({"bsdf", "metal", "eta", "k", "roughness"});
@@ -140,6 +183,8 @@ Material parseMaterial(const JsonNode& n, const std::string& name, const std::st
       if (!metal) n.child("metal").fail("unknown metal '" + m.metal + "' (allowed: " + joinNames(metalNames()) + ")");
       m.eta = metal->eta;
       m.k = metal->k;
+      m.etaSpectrum = metal->etaSpectrum;
+      m.kSpectrum = metal->kSpectrum;
     } else {
       if (!n.has("eta") || !n.has("k"))
         n.fail("a conductor needs \"metal\" (" + joinNames(metalNames()) + ") or both \"eta\" and \"k\"");
@@ -157,7 +202,7 @@ Material parseMaterial(const JsonNode& n, const std::string& name, const std::st
     m.model = rough ? BsdfModel::RoughDielectric : BsdfModel::Dielectric;
     m.roughness = rough ? n.number("roughness", 0.1f, 0.0f, 1.0f) : 0.0f;
     m.transmission = n.color("transmission", Rgb(1.0f));
-    m.ior = n.number("ior", 1.5f, 1e-3f, 100.0f);
+    parseIor(n, m, 1.5f);
     m.absorption = n.color("absorption", Rgb(0.0f));
   } else {
     n.child("bsdf").fail("unknown bsdf '" + bsdf +

@@ -1,4 +1,4 @@
-// The student tasks of every assignment (A1.1 ... A6.3) as their grading
+// The student tasks of every assignment (A1.1 ... A6.4) as their grading
 // specs (assignments/*/grading.json) list them: ID, title, the one file the
 // student edits and the functions it defines. Generated at configure time
 // (cmake/LightlabTasks.cmake), so the build, the dispatch and the grader
