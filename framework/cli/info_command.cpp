@@ -45,6 +45,7 @@ nlohmann::json describe(const Scene& s) {
       {"point_lights", point},
       {"directional_lights", directional},
       {"area_lights", s.areaLights.size()},
+      {"sky", s.environment.black() ? "none" : s.environment.isImage() ? "image" : "constant"},
       {"bounds", {{"min", vec(b.min)}, {"max", vec(b.max)}}},
       {"effects", s.effects.names()},
       {"cheapest_technique", cheapest ? nlohmann::json(cheapest->name) : nlohmann::json(nullptr)},
@@ -90,8 +91,11 @@ Command addInfoCommand(CLI::App& app, const GlobalOptions&) {
     std::printf("scene      %s\n", scene.path.c_str());
     std::printf("content    %zu objects, %u triangles, %zu spheres, %zu materials\n", scene.objects.size(),
                 scene.geometry.triangleCount(), scene.geometry.spheres.size(), scene.materials.size());
-    std::printf("lights     %zu point/directional, %zu area (emissive objects)\n", scene.lights.size(),
-                scene.areaLights.size());
+    std::printf("lights     %zu point/directional, %zu area (emissive objects), sky: %s\n", scene.lights.size(),
+                scene.areaLights.size(),
+                scene.environment.black()     ? "none (black background)"
+                : scene.environment.isImage() ? "an HDR image (a light for path)"
+                                              : "a constant colour (a light for path)");
     std::printf("camera     %dx%d, fov %.2f deg\n", scene.camera.width, scene.camera.height,
                 static_cast<double>(scene.camera.fovYDeg));
     std::printf("effects    %s\n", joinNames(scene.effects.names()).c_str());

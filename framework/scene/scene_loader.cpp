@@ -94,11 +94,13 @@ Texture parseTexture(const JsonNode& mat, const std::string& baseDir) {
 }
 
 // The local model's stand-ins for a conductor (rasterizer, ray casting, Whitted): its Fresnel colour at normal
-// incidence as mirror and Blinn-Phong highlight, the highlight's exponent matched to the roughness
-// (p = 2 / alpha^2 - 2, Walter et al. 2007), capped for a smooth metal.
+// incidence as mirror, ambient reflectance (the surroundings a metal reflects, where nothing is traced) and
+// Blinn-Phong highlight, the highlight's exponent matched to the roughness (p = 2 / alpha^2 - 2, Walter et
+// al. 2007), capped for a smooth metal.
 void conductorLocalLimit(Material& m) {
   const Rgb f0 = conductorNormalReflectance(m.eta, m.k);
   m.mirror = f0;
+  m.ka = f0;
   m.ks = f0;
   m.shininess = m.roughness >= kSmoothRoughness ? std::clamp(2.0f / (m.roughness * m.roughness) - 2.0f, 1.0f, 1e4f)
                                                 : 1e4f;
