@@ -20,6 +20,18 @@ float dielectricReflectance(float cosI, float n1, float n2) {
   return std::clamp(a3::fresnelDielectric(std::clamp(cosI, 0.0f, 1.0f), n1, n2).unpolarized(), 0.0f, 1.0f);
 }
 
+// The Blinn-Phong lobe's normalisation C in f = ks C max(0, n.h)^p: its directional albedo is largest seen
+// from straight above (wo = n), where integral C cos^p(theta_h) cos(theta_i) d omega_i = 1 gives
+// C = 1 / (8 pi [2 (1 - 2^-(p+4)/2) / (p + 4) - (1 - 2^-(p+2)/2) / (p + 2)]) (theta_i = 2 theta_h);
+// 1 / pi at p = 0. Real-time graphics' (p + 8) / (8 pi) is up to 6 % larger there (p = 20) and makes
+// light: measured in tests/numerics/bsdf_test.cpp.
+float blinnPhongNormalisation(float p) {
+  const double q = static_cast<double>(p);
+  const double integral = 2.0 * (1.0 - std::pow(2.0, -(q + 4.0) / 2.0)) / (q + 4.0) -
+                          (1.0 - std::pow(2.0, -(q + 2.0) / 2.0)) / (q + 2.0);
+  return static_cast<float>(1.0 / (8.0 * kPiD * integral));
+}
+
 // Heitz 2014's height-correlated masking-shadowing from the two one-sided G1 = 1 / (1 + Lambda).
 float smithG2(float g1o, float g1i) {
   if (!(g1o > 0.0f) || !(g1i > 0.0f)) return 0.0f;
@@ -44,6 +56,7 @@ Bsdf::Bsdf(const Material& m, const Rgb& kd, const ShadingPoint& x, float n1, fl
     pMicrofacet_ = 1.0f;
     return;
   }
+  glossyNorm_ = blinnPhongNormalisation(shininess_);
   const float wd = std::max(0.0f, luminance(kd_)), wg = std::max(0.0f, luminance(ks_));
   const float wm = std::max(0.0f, luminance(mirror_)), wt = std::max(0.0f, luminance(transmission_));
   const float sum = wd + wg + wm + wt;
@@ -73,7 +86,7 @@ Rgb Bsdf::eval(const Vec3& wo, const Vec3& wi) const {
   Rgb f = kd_ / kPi;
   if (pGlossy_ > 0.0f) {
     const float cosH = glm::dot(n_, glm::normalize(wo + wi));
-    if (cosH > 0.0f) f += ks_ * ((shininess_ + 8.0f) / (8.0f * kPi) * std::pow(cosH, shininess_));
+    if (cosH > 0.0f) f += ks_ * (glossyNorm_ * std::pow(cosH, shininess_));
   }
   return f;
 }

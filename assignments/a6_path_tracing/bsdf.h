@@ -3,7 +3,9 @@
 //
 // blinn-phong, lambert and dielectric: a sum of lobes
 //   diffuse   kd / pi                                   (smooth)
-//   glossy    ks (p + 8) / (8 pi) max(0, n.h)^p         (smooth; the Blinn-Phong lobe, energy-normalised)
+//   glossy    ks C(p) max(0, n.h)^p                     (smooth; the Blinn-Phong lobe, C(p) ~ (p + 6) / (8 pi)
+//                                                       makes its albedo exactly 1 at normal incidence, below
+//                                                       elsewhere: it never creates energy)
 //   mirror    reflectance `mirror`, the mirror direction (delta)
 //   dielectric `transmission` x (Fresnel F reflected, 1 - F refracted) (delta)
 // conductor: the GGX microfacet metal (Walter et al. 2007; Heitz 2014 for
@@ -73,6 +75,7 @@ class Bsdf {
 
   Rgb kd_, ks_, mirror_, transmission_;
   float shininess_;
+  float glossyNorm_ = 0.0f;  // C of the Blinn-Phong lobe (bsdf.cpp): its albedo is at most 1
   float n1_, n2_;
   Vec3 ng_, n_;
   Frame frame_;  // around n_
