@@ -170,7 +170,7 @@ TechniqueInfo pathTechnique() {
       "MIS, Russian roulette, every material and light; the ground truth the other techniques are measured against",
       EffectSet{Effect::DirectLighting, Effect::HardShadows, Effect::SoftShadows, Effect::MirrorReflection,
                 Effect::Refraction, Effect::GlossyHighlights, Effect::DiffuseInterreflection, Effect::Textures,
-                Effect::Emission, Effect::GlossyReflection, Effect::SkyLight},
+                Effect::Emission, Effect::GlossyReflection, Effect::SkyLight, Effect::Dispersion},
       10,
       {
           ParamDecl::integer("max_depth", 16, 0, 256,
@@ -184,6 +184,8 @@ TechniqueInfo pathTechnique() {
                             "bsdf = only paths that hit an emitter"),
       },
       []() -> std::unique_ptr<Technique> { return std::make_unique<PathTracing>(); },
+      false,
+      {{"spectral", "true", EffectSet{Effect::Dispersion}}},  // one index per material in RGB
   };
 }
 

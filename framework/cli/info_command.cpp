@@ -104,8 +104,12 @@ Command addInfoCommand(CLI::App& app, const GlobalOptions&) {
                 cheapest ? cheapest->name.c_str() : "(no registered technique simulates all of these effects)");
     for (const TechniqueInfo& t : techniques()) {
       const EffectSet missed = scene.effects.minus(t.simulates);
-      std::printf("  %-16s %s\n", t.name.c_str(),
-                  missed.empty() ? "simulates all" : ("misses " + joinNames(missed.names())).c_str());
+      std::string line = missed.empty() ? "simulates all" : "misses " + joinNames(missed.names());
+      for (const TechniqueInfo::ParamEffect& e : t.onlyWith) {  // "path ... dispersion: with --set spectral=true"
+        const EffectSet needs = EffectSet::fromBits(scene.effects.bits() & e.effects.bits());
+        if (!needs.empty()) line += " (" + joinNames(needs.names()) + ": with --set " + e.param + "=" + e.value + ")";
+      }
+      std::printf("  %-16s %s\n", t.name.c_str(), line.c_str());
     }
   };
 }

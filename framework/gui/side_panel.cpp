@@ -246,7 +246,7 @@ void paneSection(AppState& app, int i) {
         "scale");
   if (ImGui::Button("Restart")) p.dirty = true;
   if (app.scene) {
-    const EffectSet sim = findTechnique(p.technique).simulates;
+    const EffectSet sim = findTechnique(p.technique).simulatesWith(p.techniqueParams);
     const EffectSet needed = app.scene->effects;
     ImGui::TextWrapped("simulates: %s",
                        joinNames(EffectSet::fromBits(needed.bits() & sim.bits()).names()).c_str());

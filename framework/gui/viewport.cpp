@@ -199,7 +199,7 @@ std::vector<std::string> paneCaption(const AppState& app, int index, const std::
     lines.emplace_back(buf);
   }
   if (app.scene && s.view == PaneView::Image) {
-    const EffectSet missed = app.scene->effects.minus(findTechnique(p.technique).simulates);
+    const EffectSet missed = app.scene->effects.minus(findTechnique(p.technique).simulatesWith(p.techniqueParams));
     if (!missed.empty()) lines.push_back("misses: " + joinNames(missed.names()));
   }
   return lines;

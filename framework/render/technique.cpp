@@ -12,6 +12,21 @@
 
 namespace ll {
 
+EffectSet TechniqueInfo::simulatesWith(const ParamSet& values) const {
+  EffectSet s = simulates;
+  for (const ParamEffect& e : onlyWith) {
+    std::string value;
+    if (values.has(e.param)) {
+      value = values.text(e.param);
+    } else {
+      for (const ParamDecl& d : params)
+        if (d.name == e.param) value = d.defaultValue;
+    }
+    if (value != e.value) s = s.minus(e.effects);
+  }
+  return s;
+}
+
 namespace {
 std::atomic<bool> precomputationCache{true};
 }  // namespace

@@ -120,6 +120,15 @@ struct TechniqueInfo {
   std::vector<ParamDecl> params;
   std::unique_ptr<Technique> (*make)() = nullptr;
   bool gpu = false;  // renders with OpenGL on the offscreen context (gpu/offscreen_gl.h): the GUI sets it up
+  // Effects in `simulates` that need a parameter's value (path's dispersion needs spectral=true).
+  struct ParamEffect {
+    std::string param, value;
+    EffectSet effects;
+  };
+  std::vector<ParamEffect> onlyWith{};
+
+  // What the technique simulates with these parameter values (the declared defaults where not set).
+  EffectSet simulatesWith(const ParamSet& values) const;
 };
 
 }  // namespace ll

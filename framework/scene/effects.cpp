@@ -15,6 +15,7 @@ const char* effectName(Effect e) {
     case Effect::Emission: return "emission";
     case Effect::GlossyReflection: return "glossy-reflection";
     case Effect::SkyLight: return "sky-light";
+    case Effect::Dispersion: return "dispersion";
   }
   return "?";
 }

@@ -20,8 +20,9 @@ enum class Effect : uint32_t {
   Emission = 1u << 8,                // visible emissive surfaces
   GlossyReflection = 1u << 9,        // a rough metal or rough glass: the scene reflected blurred (microfacet BSDF)
   SkyLight = 1u << 10,               // the background lights the scene (a sky colour or HDR image around it)
+  Dispersion = 1u << 11,             // glass whose index depends on wavelength (Cauchy): white light splits
 };
-constexpr int kEffectCount = 11;
+constexpr int kEffectCount = 12;
 
 class EffectSet {
  public:

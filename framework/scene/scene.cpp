@@ -63,6 +63,7 @@ EffectSet analyseEffects(const Scene& s) {
     const Material& m = s.materials[i];
     if (m.reflectsMirror()) e.add(Effect::MirrorReflection);
     if (m.transmits()) e.add(Effect::Refraction);
+    if (m.transmits() && m.dispersive()) e.add(Effect::Dispersion);
     if (m.glossy() && (hasLights || hasAreaLights)) e.add(Effect::GlossyHighlights);
     if (m.glossyScattering()) e.add(Effect::GlossyReflection);
     if (m.texture.kind != Texture::Kind::None) e.add(Effect::Textures);

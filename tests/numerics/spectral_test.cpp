@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include "core/params.h"
+#include "modules/registry.h"
 #include "render_support.h"
 #include "scene/scene_loader.h"
 #include "spectral.h"
@@ -110,6 +112,20 @@ TEST(Numerics_Spectral, PrismDispersesWhiteLightOnlySpectrally) {
   colourfulPixels("true", reddish, bluish, lit);
   EXPECT_GT(reddish, 5);
   EXPECT_GT(bluish, 5);
+}
+
+// The prism calls for dispersion; path simulates it only spectrally, and says so (GUI captions, info).
+TEST(Numerics_Spectral, PathSimulatesDispersionOnlyWithSpectralTrue) {
+  const Scene scene = loadScene(kScenes + "prism.json");
+  EXPECT_TRUE(scene.effects.has(Effect::Dispersion));
+  EXPECT_FALSE(loadScene(kScenes + "whitted_1980.json").effects.has(Effect::Dispersion));
+  const TechniqueInfo& path = findTechnique("path");
+  ParamSet values("technique 'path'", path.params);
+  EXPECT_FALSE(path.simulatesWith(values).has(Effect::Dispersion));
+  values.assign("spectral=true");
+  EXPECT_TRUE(path.simulatesWith(values).has(Effect::Dispersion));
+  const TechniqueInfo& whitted = findTechnique("whitted");
+  EXPECT_FALSE(whitted.simulatesWith(ParamSet("technique 'whitted'", whitted.params)).has(Effect::Dispersion));
 }
 
 }  // namespace
