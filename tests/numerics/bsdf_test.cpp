@@ -95,6 +95,21 @@ std::vector<Case> roughCases() {
   return cases;
 }
 
+// The chi-square test of `sampler`'s directions against the density `claimed` gives (the same BSDF, or a
+// wrong one to show the test's power).
+ChiSquareResult chiSquareOf(const a6::Bsdf& sampler, const a6::Bsdf& claimed, const Vec3& wo, uint64_t seed,
+                            const ChiSquareSettings& st) {
+  Rng rng(seed, 0);
+  return chiSquareTest(
+      [&]() -> std::optional<Vec3> {
+        const float uLobe = rng.uniform();
+        const auto s = sampler.sample(wo, rng.uniform2(), uLobe);
+        if (!s) return std::nullopt;
+        return s->wi;
+      },
+      [&](const Vec3& wi) { return static_cast<double>(claimed.pdf(wo, wi)); }, st);
+}
+
 // Every case at three view angles, 1 % family-wise significance (Sidak).
 TEST(Numerics_Bsdf, SamplingMatchesItsPdfByChiSquare) {
   SKIP_WITHOUT_SOLUTION();
@@ -107,15 +122,7 @@ TEST(Numerics_Bsdf, SamplingMatchesItsPdfByChiSquare) {
     for (float view : views) {
       const Vec3 wo = direction(view, 30.0f);
       const a6::Bsdf bsdf = bsdfAt(c.material, wo, c.n1, c.n2);
-      Rng rng(seed++, 0);
-      const ChiSquareResult r = chiSquareTest(
-          [&]() -> std::optional<Vec3> {
-            const float uLobe = rng.uniform();
-            const auto s = bsdf.sample(wo, rng.uniform2(), uLobe);
-            if (!s) return std::nullopt;
-            return s->wi;
-          },
-          [&](const Vec3& wi) { return static_cast<double>(bsdf.pdf(wo, wi)); }, st);
+      const ChiSquareResult r = chiSquareOf(bsdf, bsdf, wo, seed++, st);
       EXPECT_TRUE(r.passed) << c.name << ", view " << view << " deg: " << r.summary();
       EXPECT_LE(r.pdfIntegral, 1.0 + 2e-3) << c.name << ", view " << view << " deg";
     }
@@ -127,15 +134,7 @@ TEST(Numerics_Bsdf, ChiSquareRejectsAPdfOfTheWrongRoughness) {
   for (float a : {0.2f, 0.6f}) {
     const Vec3 wo = direction(45.0f, 0.0f);
     const a6::Bsdf bsdf = bsdfAt(conductor(a), wo), wrong = bsdfAt(conductor(a * 1.15f), wo);
-    Rng rng(7, 0);
-    const ChiSquareResult r = chiSquareTest(
-        [&]() -> std::optional<Vec3> {
-          const float uLobe = rng.uniform();
-          const auto s = bsdf.sample(wo, rng.uniform2(), uLobe);
-          if (!s) return std::nullopt;
-          return s->wi;
-        },
-        [&](const Vec3& wi) { return static_cast<double>(wrong.pdf(wo, wi)); }, ChiSquareSettings{});
+    const ChiSquareResult r = chiSquareOf(bsdf, wrong, wo, 7, ChiSquareSettings{});
     EXPECT_FALSE(r.passed) << "alpha " << a << ": " << r.summary();
   }
 }
