@@ -65,11 +65,12 @@ class PathTracing final : public PixelTechnique {
     bool heroOnly = false;  // a dispersive refraction left only the hero wavelength
     const auto colour = [&](const Rgb& rgb) { return spectral_ ? spectral_->upsample(rgb, wl) : rgb; };
     const auto mediumIor = [&](const Media& md) {
-      if (!spectral_ || md.count == 0) return md.ior(scene);
-      return scene.materials[md.ids[static_cast<size_t>(md.count - 1)]].iorAt(wl.nm[0]);
+      const Material* inside = md.innermost(scene);
+      return inside && spectral_ ? inside->iorAt(wl.nm[0]) : md.ior(scene);
     };
     const auto dispersive = [&](const Media& md) {
-      return md.count > 0 && scene.materials[md.ids[static_cast<size_t>(md.count - 1)]].dispersive();
+      const Material* inside = md.innermost(scene);
+      return inside && inside->dispersive();
     };
     const auto mediumAbsorption = [&](const Media& md) {
       return md.count == 0 ? Rgb(0.0f) : colour(md.absorption(scene));

@@ -18,16 +18,14 @@ Wavelengths Wavelengths::sample(float u) {
 }
 
 SpectralContext::SpectralContext() : upsampler_(defaultRgbToSpectrum(spectraDirectory())) {
-  // The same 1 nm sums as reflectanceToRgb: the constant 1 maps to `white_` before balancing.
-  Vec3 xyz(0.0f);
-  for (float nm = kMinNm; nm <= kMaxNm; nm += 1.0f) xyz += Vec3(cieX(nm), cieY(nm), cieZ(nm));
-  white_ = xyzToLinearSrgb(xyz);
   // Smits' white is flat at about 1.06 (core/spectrum.h): divide it out, so an upsampled grey projects back
   // to itself and RGB and spectral renders of a grey world agree.
-  Vec3 whiteXyz(0.0f);
-  for (float nm = kMinNm; nm <= kMaxNm; nm += 1.0f)
-    whiteXyz += upsampler_.eval(Rgb(1.0f), nm) * Vec3(cieX(nm), cieY(nm), cieZ(nm));
-  const Rgb back = xyzToLinearSrgb(whiteXyz) / white_;
+  Spectrum white;
+  for (float nm = kMinNm; nm <= kMaxNm; nm += 1.0f) {
+    white.nm.push_back(nm);
+    white.value.push_back(upsampler_.eval(Rgb(1.0f), nm));
+  }
+  const Rgb back = reflectanceToRgb(white);
   gain_ = (back.r + back.g + back.b) / 3.0f;
 }
 
@@ -66,10 +64,9 @@ Rgb SpectralContext::toRgb(const Rgb& radiance, const Wavelengths& w) const {
     const float l = radiance[static_cast<int>(i)];
     xyz += l * Vec3(cieX(w.nm[i]), cieY(w.nm[i]), cieZ(w.nm[i]));
   }
-  // Monte Carlo over wavelength: mean of f(lambda) / p(lambda) with p = 1 / (range); the 1 nm sums of
-  // `white_` are the same integral in units of nm.
+  // Monte Carlo over wavelength: the mean of f(lambda) / p(lambda) with p = 1 / (range), an integral in nm.
   xyz *= (kMaxNm - kMinNm) / 3.0f;
-  return xyzToLinearSrgb(xyz) / white_;
+  return xyzToBalancedRgb(xyz);
 }
 
 }  // namespace ll::a6

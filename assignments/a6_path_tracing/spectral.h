@@ -47,7 +47,6 @@ class SpectralContext {
 
  private:
   const RgbToSpectrum& upsampler_;
-  Rgb white_{1.0f};  // linear sRGB of the constant spectrum 1, to divide by
   float gain_ = 1.0f;  // what the upsampler's white projects to (about 1.06), divided out
 };
 

@@ -184,16 +184,18 @@ Vec3 integrateXyz(const std::array<float, kSteps>& values) {
 }
 
 // sRGB of the samples, white-balanced so that all ones give (1,1,1).
-Rgb samplesToRgb(const std::array<float, kSteps>& values) {
+Rgb samplesToRgb(const std::array<float, kSteps>& values) { return xyzToBalancedRgb(integrateXyz(values)); }
+
+}  // namespace
+
+Rgb xyzToBalancedRgb(const Vec3& xyz) {
   static const Rgb white = [] {
     std::array<float, kSteps> ones;
     ones.fill(1.0f);
     return xyzToLinearSrgb(integrateXyz(ones));
   }();
-  return xyzToLinearSrgb(integrateXyz(values)) / white;
+  return xyzToLinearSrgb(xyz) / white;
 }
-
-}  // namespace
 
 Rgb reflectanceToRgb(const Spectrum& s) {
   std::array<float, kSteps> v{};

@@ -59,6 +59,11 @@ Rgb xyzToLinearSrgb(const Vec3& xyz);
 // Fresnel equations are not linear in n and k), as in Mitsuba's RGB modes.
 Rgb reflectanceToRgb(const Spectrum& s);
 
+// XYZ = integral over 360-830 nm of s(lambda) (x, y, z)(lambda) dlambda (nm) to the white-balanced linear
+// sRGB reflectanceToRgb gives: divided per channel by the sRGB of the constant spectrum 1. What a spectral
+// renderer's XYZ estimate becomes, so its colours and the projected RGB inputs agree.
+Rgb xyzToBalancedRgb(const Vec3& xyz);
+
 // Normal-incidence reflectance of a conductor in vacuum,
 // R(λ) = ((n-1)² + k²) / ((n+1)² + k²) with n, k interpolated at each 1 nm
 // step of reflectanceToRgb, then projected by it: the "Fresnel colour" F0 of

@@ -20,11 +20,13 @@ Media Media::without(uint32_t material) const {
 }
 
 float Media::ior(const Scene& scene) const {
-  return count == 0 ? 1.0f : scene.materials[ids[static_cast<size_t>(count - 1)]].ior;
+  const Material* m = innermost(scene);
+  return m ? m->ior : 1.0f;
 }
 
 Rgb Media::absorption(const Scene& scene) const {
-  return count == 0 ? Rgb(0.0f) : scene.materials[ids[static_cast<size_t>(count - 1)]].absorption;
+  const Material* m = innermost(scene);
+  return m ? m->absorption : Rgb(0.0f);
 }
 
 }  // namespace ll

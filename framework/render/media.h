@@ -18,6 +18,10 @@ struct Media {
   int count = 0;
   Media with(uint32_t material) const;     // entered `material`
   Media without(uint32_t material) const;  // left it (the innermost occurrence)
+  // The innermost medium's material, or nullptr outside everything.
+  const Material* innermost(const Scene& scene) const {
+    return count == 0 ? nullptr : &scene.materials[ids[static_cast<size_t>(count - 1)]];
+  }
   // Refractive index of the innermost medium (1 = vacuum/air outside everything).
   float ior(const Scene& scene) const;
   // Beer-Lambert coefficient of the innermost medium, 1 / scene unit (0 outside).

@@ -70,14 +70,21 @@ Transform parseTransform(const JsonNode& obj) {
   return t;
 }
 
+// The file a string node names, relative to the scene's folder; fails at the node ("<what> not found: ...")
+// if it does not exist.
+std::string sceneRelativeFile(const JsonNode& n, const std::string& baseDir, const std::string& what) {
+  const std::string file = (fs::path(baseDir) / n.json().get<std::string>()).lexically_normal().string();
+  std::error_code ec;  // (a name too long for the system: a message, not a filesystem_error)
+  if (!fs::exists(file, ec)) n.fail(what + " not found: " + file + (ec ? " (" + ec.message() + ")" : ""));
+  return file;
+}
+
 Texture parseTexture(const JsonNode& mat, const std::string& baseDir) {
   Texture tex;
   if (!mat.has("texture")) return tex;
   const JsonNode n = mat.child("texture");
   if (n.json().is_string()) {
-    const std::string file = (fs::path(baseDir) / n.json().get<std::string>()).lexically_normal().string();
-    std::error_code ec;  // (a name too long for the system: a message, not a filesystem_error)
-    if (!fs::exists(file, ec)) n.fail("texture file not found: " + file + (ec ? " (" + ec.message() + ")" : ""));
+    const std::string file = sceneRelativeFile(n, baseDir, "texture file");
     tex.kind = Texture::Kind::Image;
     tex.image = std::make_shared<Image>(loadImage(file));
     return tex;
@@ -116,9 +123,7 @@ Rgb colorOrSpectrum(const JsonNode& n, const std::string& key, Rgb fallback, con
   c.allowOnly({"spectrum", "column", "scale"});
   const JsonNode fileNode = c.child("spectrum");
   if (!fileNode.json().is_string()) fileNode.fail(fileNode.what() + " must be a file name (a .csv spectral table)");
-  const std::string file = (fs::path(baseDir) / fileNode.json().get<std::string>()).lexically_normal().string();
-  std::error_code ec;
-  if (!fs::exists(file, ec)) fileNode.fail("spectrum file not found: " + file);
+  const std::string file = sceneRelativeFile(fileNode, baseDir, "spectrum file");
   const SpectrumTable table = loadSpectraCsv(file);
   const std::string column = c.string("column");
   const float scale = c.number("scale", 1.0f, 0.0f, 1e6f);
@@ -440,9 +445,7 @@ Environment parseBackground(const JsonNode& root, const std::string& baseDir) {
   n.allowOnly({"image", "strength", "rotation_deg"});
   const JsonNode image = n.child("image");
   if (!image.json().is_string()) image.fail(image.what() + " must be a file name (an equirectangular .hdr or .pfm)");
-  const std::string file = (fs::path(baseDir) / image.json().get<std::string>()).lexically_normal().string();
-  std::error_code ec;
-  if (!fs::exists(file, ec)) image.fail("sky image not found: " + file);
+  const std::string file = sceneRelativeFile(image, baseDir, "sky image");
   const float strength = n.number("strength", 1.0f, 0.0f, 1e6f);
   const float rotation = n.number("rotation_deg", 0.0f, -360.0f, 360.0f);
   auto sky = std::make_shared<Image>(loadImage(file));
