@@ -33,7 +33,7 @@ cleanup() {
 gui=
 trap cleanup EXIT
 display=:$((90 + RANDOM % 100))
-Xvfb "$display" -screen 0 1600x1000x24 > /dev/null 2>&1 &
+Xvfb "$display" -noreset -screen 0 1600x1000x24 > /dev/null 2>&1 &
 xvfb=$!
 sleep 1
 cp "$work/a.cpp" "$file"

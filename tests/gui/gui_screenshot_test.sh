@@ -18,7 +18,7 @@ common=(--quiet render data/scenes/cornell_box.json -t raycast -a none --width 1
 "$LL" "${common[@]}" --set light_samples=1 -o "$OUT/b.pfm"
 
 shot() {  # preset name -> OUT/name.png (+ .json)
-  xvfb-run -a -n 160 -s '-screen 0 1280x800x24' "$LL" gui --preset "$HERE/$1.json" --screenshot "$OUT/$1.png" \
+  xvfb-run -a -n 160 -s '-noreset -screen 0 1280x800x24' "$LL" gui --preset "$HERE/$1.json" --screenshot "$OUT/$1.png" \
     --frames 3 --timeout 600 >/dev/null
 }
 shot two_panes
@@ -67,7 +67,7 @@ if "$CHECK" "$OUT/ray_tree.png" pane 0 "$OUT/whitted.pfm" >/dev/null; then  # th
 fi
 echo "ok: whitted pane and its ray tree"
 # Radiosity's bounces in four panes (a bundled preset): every pane finishes, the patches are solved once.
-xvfb-run -a -n 160 -s '-screen 0 1280x800x24' "$LL" gui --preset "$ROOT/data/presets/radiosity_bounces.json" \
+xvfb-run -a -n 160 -s '-noreset -screen 0 1280x800x24' "$LL" gui --preset "$ROOT/data/presets/radiosity_bounces.json" \
   --screenshot "$OUT/radiosity.png" --frames 3 --timeout 600 >/dev/null
 python3 -c "import json,sys; ps=json.load(open('$OUT/radiosity.json'))['panes'][:4]; \
 sys.exit(0 if all(p['phase'] == 'done' and not p['error'] for p in ps) else 1)" \

@@ -60,8 +60,7 @@ else
 fi
 
 # 4. Wipe: click the radio button, then drag the split line from the middle to a quarter.
-click s4a compare.wipe 0.1
-until_shot s4b "j['compare']['mode'] == 'wipe' and j['compare']['rect'][2] > 0"
+click_until s4b compare.wipe 0.1 "j['compare']['mode'] == 'wipe' and j['compare']['rect'][2] > 0"
 read -r x y w h < <(q s4b.json "' '.join(str(int(v)) for v in j['compare']['rect'])")
 drag $((x + w / 2)) $((y + h / 2)) $((x + w / 4)) $((y + h / 2))
 until_shot s4 "abs(j['compare']['wipe'] - 0.25) < 0.03"

@@ -56,7 +56,7 @@ def main():
             run = command
             if len(words) > 1 and "gui" in words[1:3]:
                 shot = os.path.join(work, f"gui_{ran}.png")
-                run = ("xvfb-run -a -n 180 -s '-screen 0 1280x800x24' " + " ".join(shlex.quote(w) for w in words) +
+                run = ("xvfb-run -a -n 180 -s '-noreset -screen 0 1280x800x24' " + " ".join(shlex.quote(w) for w in words) +
                        f" --screenshot {shlex.quote(shot)} --frames 2 --timeout 300")
             start = time.time()
             try:

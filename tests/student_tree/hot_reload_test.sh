@@ -67,8 +67,12 @@ assert all(t.startswith("A2.") for t in a["missing_tasks"]), a["missing_tasks"]
 print("ok: pane A ray casts with the student's A2.2/A2.3 (caption), the banner is one line under the picture")
 PY
 folded=$(q s1.json "j['widgets']['pane.A.banner'][3]")
-xdotool mousemove $(q s1.json "' '.join(str(int(v)) for v in (j['widgets']['pane.A.banner'][0] + 20, j['widgets']['pane.A.banner'][1] + j['widgets']['pane.A.banner'][3] / 2))") sleep 0.2 click 1
-until_shot s1b "j['widgets'].get('pane.A.banner', [0, 0, 0, 0])[3] > 1.5 * $folded" 30
+unfolded="j['widgets'].get('pane.A.banner', [0, 0, 0, 0])[3] > 1.5 * $folded"
+for attempt in 1 2 3; do  # a click no frame took up (a loaded machine) is made again, as a user would
+  press $(q s1.json "' '.join(str(int(v)) for v in (j['widgets']['pane.A.banner'][0] + 20, j['widgets']['pane.A.banner'][1] + j['widgets']['pane.A.banner'][3] / 2))")
+  for _ in $(seq 20); do shot s1b; [ "$(q s1b.json "$unfolded")" = True ] && break 2; sleep 0.3; done
+done
+[ "$(q s1b.json "$unfolded")" = True ] || fail "s1b: three clicks did not unfold the banner"
 echo "ok: a click unfolds the banner (one line per task)"
 kill "$gui"; wait "$gui" 2>/dev/null || true
 

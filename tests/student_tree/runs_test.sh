@@ -73,7 +73,7 @@ print(f"{sys.argv[2]}: 0 points, {len(rows)} tasks not implemented")
 PY
 done
 if command -v xvfb-run >/dev/null && build/lightlab --help | grep -q '^\s*gui'; then
-  xvfb-run -a -n 170 -s '-screen 0 1280x800x24' build/lightlab gui --preset tests/gui/two_panes.json \
+  xvfb-run -a -n 170 -s '-noreset -screen 0 1280x800x24' build/lightlab gui --preset tests/gui/two_panes.json \
     --screenshot "$work/gui.png" --frames 3 --timeout 600 >/dev/null
   for task in A2.1 A2.4 A2.5; do
     grep -q "\"$task\"" "$work/gui.json" || { echo "FAIL: the GUI pane does not name $task as missing"; exit 1; }
