@@ -16,6 +16,16 @@
 // is a light like the others: sampled by next-event estimation and weighted
 // by MIS where a path escapes. Ambient light (ka Ia) is a local-model device and is not
 // used. Framework code: students write the functions in a6_tasks.h.
+//
+// Light-path classes (render/light_path_class.h): every contribution is
+// added to the class of its path (emission, direct-lighting, ..., caustics)
+// when the frame buffer keeps them; they sum to the picture. With
+// `--set effects=measured` a short probe (render/light_path_probe.h) first
+// measures each class, and the classes whose absence changes the picture by
+// less than `effects_tolerance` (relMSE, the probe's 95 % upper bound) are
+// left out: their contributions are not added, their shadow rays not traced,
+// and a path ends as soon as no class it could still reach is kept.
+#include <algorithm>
 #include <memory>
 #include <optional>
 
@@ -23,12 +33,17 @@
 #include "bsdf.h"
 #include "light_sampler.h"
 #include "spectral.h"
+#include "render/light_path_probe.h"
 #include "render/media.h"
 #include "render/ray_offset.h"
 #include "render/technique.h"
+#include "core/timer.h"
+#include "render/render_job.h"
 #include "scene/camera.h"
 
 namespace ll {
+
+TechniqueInfo pathTechnique();
 
 namespace {
 
@@ -36,6 +51,10 @@ enum class Strategy { Mis, Light, Bsdf };
 
 class PathTracing final : public PixelTechnique {
  public:
+  explicit PathTracing(LightPathMask keep = kAllLightPathClasses) : fixedKeep_(keep) {}
+  bool splitsLightPaths() const override { return true; }
+  std::optional<SkippedWork> skippedWork() const override { return skipped_; }
+
   void prepare(const RenderContext& ctx) override {
     camera_ = renderCamera(ctx.scene, ctx.settings);
     frame_.emplace(camera_);
@@ -49,6 +68,9 @@ class PathTracing final : public PixelTechnique {
     } else {
       spectral_.reset();
     }
+    keep_ = fixedKeep_;
+    skipped_.reset();
+    if (ctx.params.getChoice("effects") == "measured") measureEffects(ctx);
   }
 
  protected:
@@ -77,6 +99,12 @@ class PathTracing final : public PixelTechnique {
     };
     bool deltaBounce = true;  // the last direction had no density (camera ray, mirror, glass): no MIS
     float bsdfPdf = 0.0f;     // the density of the last smooth bounce, for MIS at an emitter it hits
+    LightPathState path;      // the events so far, for the class of what the path finds
+    const auto add = [&](const Rgb& contribution, LightPathClass c) {  // a contribution of class c, if kept
+      if (!(keep_ & lightPathBit(c))) return;
+      radiance += contribution;
+      if (s.lightPaths) s.lightPaths[static_cast<size_t>(c)] += contribution;
+    };
     for (int bounce = 0;; ++bounce) {
       Hit hit;
       if (!tracer.intersect(ray, hit, kind)) {  // the sky, weighted by MIS against its light samples
@@ -85,7 +113,7 @@ class PathTracing final : public PixelTechnique {
           if (strategy_ == Strategy::Light) weight = 0.0f;
           if (strategy_ == Strategy::Mis) weight = a6::powerHeuristic(bsdfPdf, lights_->pdfSky(ray.dir));
         }
-        radiance += throughput * colour(scene.environment.radiance(ray.dir)) * weight;
+        add(throughput * colour(scene.environment.radiance(ray.dir)) * weight, path.atLight());
         break;
       }
       const Rgb sigma = mediumAbsorption(media);  // Beer-Lambert along the segment just travelled
@@ -109,7 +137,7 @@ class PathTracing final : public PixelTechnique {
           if (strategy_ == Strategy::Mis)
             weight = a6::powerHeuristic(bsdfPdf, lights_->pdfSolidAngle(hit.prim, hit.t, glm::dot(x.ng, x.wo)));
         }
-        radiance += throughput * m.emission * weight;
+        add(throughput * m.emission * weight, path.atLight());
       }
       if (bounce >= maxDepth_) break;
 
@@ -119,17 +147,28 @@ class PathTracing final : public PixelTechnique {
       const float n1 = mediumIor(media), n2 = m.transmits() ? (front ? m.ior : mediumIor(behind)) : n1;
       const a6::Bsdf bsdf(m, spectral_ ? m.kd : m.diffuse(sp.uv), x, n1, n2);
 
+      // This surface's event when it scatters through a smooth lobe: G for a rough microfacet surface.
+      const PathVertex smooth = m.glossyScattering() ? PathVertex::Glossy : PathVertex::Diffuse;
+      const LightPathClass litHere = path.then(smooth).atLight();
+      // The light sample's random numbers are drawn even when its class is left out: the other classes
+      // then see the same random streams as a full render.
       if (bsdf.hasSmoothLobes() && strategy_ != Strategy::Bsdf && !lights_->empty()) {
         a6::LightSample light = lights_->sample(rng.uniform(), rng.uniform2(), x.position);
-        if (spectral_)
-          light.emission = spectral_->at(light.material ? light.material->emissionSpectrum.get() : nullptr,
-                                         light.emission, wl);
-        radiance += throughput * a6::nextEventEstimate(x, light, bsdf, tracer, strategy_ == Strategy::Mis);
+        if (keep_ & lightPathBit(litHere)) {
+          if (spectral_)
+            light.emission = spectral_->at(light.material ? light.material->emissionSpectrum.get() : nullptr,
+                                           light.emission, wl);
+          add(throughput * a6::nextEventEstimate(x, light, bsdf, tracer, strategy_ == Strategy::Mis), litHere);
+        }
       }
       const float uLobe = rng.uniform();
       const Vec2 u = rng.uniform2();
       const std::optional<a6::BsdfSample> next = bsdf.sample(x.wo, u, uLobe);
       if (!next) break;
+      path = path.then(!next->delta          ? smooth
+                       : next->transmitted ? PathVertex::SpecularRefraction
+                                           : PathVertex::SpecularReflection);
+      if (!(path.reachable() & keep_)) break;  // nothing kept lies further along this path
       // With light sampling only, a last smooth bounce could add nothing: no ray for it.
       if (!next->delta && strategy_ == Strategy::Light && bounce + 1 >= maxDepth_) break;
       throughput *= next->weight;
@@ -150,10 +189,62 @@ class PathTracing final : public PixelTechnique {
       ray.dir = next->wi;
       kind = !next->delta ? RayKind::Indirect : next->transmitted ? RayKind::Refraction : RayKind::Reflection;
     }
+    if (spectral_ && s.lightPaths)
+      for (size_t c = 0; c < kLightPathClassCount; ++c) s.lightPaths[c] = spectral_->toRgb(s.lightPaths[c], wl);
     return spectral_ ? spectral_->toRgb(radiance, wl) : radiance;
   }
 
  private:
+  // --set effects=measured: a probe at the same parameters measures each class; the classes whose absence
+  // stays within effects_tolerance (relMSE, 95 % upper bound) are left out, fewest-first by their error.
+  void measureEffects(const RenderContext& ctx) {
+    const Timer timer;
+    ParamSet probeParams = ctx.params;
+    probeParams.set("effects", "all");
+    LightPathProbeSettings ps;
+    ps.seed = ctx.settings.seed + 7919;  // not the render's own streams
+    const LightPathProbe probe(ctx.scene, ctx.accel, pathTechnique(), probeParams, ps);
+    const double tolerance = ctx.params.getFloat("effects_tolerance");
+    std::vector<std::pair<double, LightPathClass>> order;
+    for (int c = 0; c < kLightPathClassCount; ++c)
+      order.emplace_back(probe.relMseWithout(lightPathBit(lightPathClassAt(c))).high, lightPathClassAt(c));
+    std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    LightPathMask skip = 0;
+    for (const auto& [error, c] : order)
+      if (probe.relMseWithout(skip | lightPathBit(c)).high <= tolerance) skip |= lightPathBit(c);
+    // Only the classes the scene produces at all are worth naming.
+    LightPathMask present = 0;
+    for (int c = 0; c < kLightPathClassCount; ++c)
+      if (probe.share(lightPathClassAt(c)).high > 0.0) present |= lightPathBit(lightPathClassAt(c));
+    keep_ = fixedKeep_ & ~skip;
+    SkippedWork w;
+    w.tolerance = tolerance;
+    const Estimate added = probe.relMseWithout(skip);
+    w.errorAdded = added.value;
+    w.errorAddedHigh = added.high;
+    w.secondsPerPassFull = probe.secondsPerPass();
+    std::string names;
+    for (int c = 0; c < kLightPathClassCount; ++c)
+      if (skip & present & lightPathBit(lightPathClassAt(c)))
+        names += std::string(names.empty() ? "" : ", ") + lightPathClassName(lightPathClassAt(c));
+    w.skipped = names.empty() ? "nothing: every class the scene has shows" : names;
+    // The saving, measured: one more probe batch with the classes left out.
+    PathTracing skipping(keep_);
+    RenderSettings rs;
+    rs.width = probe.width();
+    rs.height = probe.height();
+    rs.spp = ps.sppPerBatch;
+    rs.seed = ps.seed;
+    RenderJob job(ctx.scene, ctx.accel, skipping, probeParams, rs);
+    job.run();
+    w.secondsPerPassSkipping = (job.stats().renderSeconds + job.stats().prepareSeconds) / rs.spp;
+    w.probeSeconds = timer.seconds();
+    skipped_ = w;
+  }
+
+  LightPathMask fixedKeep_ = kAllLightPathClasses;  // the classes this instance may add
+  LightPathMask keep_ = kAllLightPathClasses;       // ... after effects=measured left some out
+  std::optional<SkippedWork> skipped_;
   std::optional<a6::SpectralContext> spectral_;
   Camera camera_;
   std::optional<CameraFrame> frame_;
@@ -171,7 +262,7 @@ TechniqueInfo pathTechnique() {
       "MIS, Russian roulette, every material and light; the ground truth the other techniques are measured against",
       EffectSet{Effect::DirectLighting, Effect::HardShadows, Effect::SoftShadows, Effect::MirrorReflection,
                 Effect::Refraction, Effect::GlossyHighlights, Effect::DiffuseInterreflection, Effect::Textures,
-                Effect::Emission, Effect::GlossyReflection, Effect::SkyLight, Effect::Dispersion},
+                Effect::Emission, Effect::GlossyReflection, Effect::SkyLight, Effect::Dispersion, Effect::Caustics},
       10,
       {
           ParamDecl::integer("max_depth", 16, 0, 256,
@@ -183,6 +274,11 @@ TechniqueInfo pathTechnique() {
           ParamDecl::choice("strategy", "mis", {"mis", "light", "bsdf"},
                             "direct light from: mis = light and BSDF sampling combined; light = light samples only; "
                             "bsdf = only paths that hit an emitter"),
+          ParamDecl::choice("effects", "all", {"all", "measured"},
+                            "all = every light path; measured = a short probe first, then leave out the "
+                            "light-path classes whose absence stays within effects_tolerance"),
+          ParamDecl::real("effects_tolerance", kDefaultEffectsTolerance, 0.0, 1.0,
+                          "relMSE a left-out class may add (effects=measured; the probe's 95 % upper bound)"),
       },
       []() -> std::unique_ptr<Technique> { return std::make_unique<PathTracing>(); },
       false,

@@ -21,6 +21,8 @@
 
 namespace ll::cli {
 
+namespace fs = std::filesystem;
+
 namespace {
 struct RenderOptions {
   std::string scene, technique = "raycast", accelerator = "none", output, statsPath;
@@ -68,6 +70,7 @@ Command addRenderCommand(CLI::App& app, const GlobalOptions& global) {
       settings.width = std::max(1, o->height * s.scene.camera.width / s.scene.camera.height);
     settings.spp = o->spp;
     settings.seed = o->seed;
+    settings.lightPaths = !o->statsPath.empty();  // `path` splits its estimate by light-path class for the stats
 
     if (!o->cost.empty()) {
       Camera camera = renderCamera(s.scene, settings);
@@ -108,6 +111,18 @@ Command addRenderCommand(CLI::App& app, const GlobalOptions& global) {
     stats.accel.buildSeconds = s.buildSeconds;
 
     saveImage(job.frame().resolve(), o->output, ToneMap{o->exposure});
+    // Each light-path class beside the output (OUT.direct-lighting.png, ...), and its share.
+    std::string classLine;
+    for (const LightPathShare& c : stats.lightPaths) {
+      const fs::path out(o->output);
+      const fs::path file = out.parent_path() / (out.stem().string() + "." + lightPathClassName(c.cls) +
+                                                 out.extension().string());
+      saveImage(job.frame().resolveLightPath(c.cls), file.string(), ToneMap{o->exposure});
+      char part[96];
+      std::snprintf(part, sizeof part, "%s%s %.1f %%", classLine.empty() ? "" : ", ", lightPathClassName(c.cls),
+                    100.0 * c.luminanceShare);
+      classLine += part;
+    }
     if (!o->statsPath.empty()) {
       createParentDirectory(o->statsPath);
       std::ofstream out(o->statsPath);
@@ -132,6 +147,18 @@ Command addRenderCommand(CLI::App& app, const GlobalOptions& global) {
                     static_cast<double>(stats.work.totalRays()) / std::max(stats.renderSeconds, 1e-9) * 1e-6);
     std::printf("wrote %s (%dx%d, %d spp, %s, %.3f s render%s)\n", o->output.c_str(), settings.width,
                 settings.height, settings.spp, s.technique->name.c_str(), stats.renderSeconds, speed);
+    if (!classLine.empty())
+      std::printf("light paths (share of the luminance; one image each beside %s): %s\n", o->output.c_str(),
+                  classLine.c_str());
+    if (stats.skipped)
+      std::printf("effects=measured: left out %s; error added relMSE %.2g (95 %% bound %.2g, tolerance %.2g); "
+                  "%.0f %% less time per sample on the probe (%.1f s of probing)\n",
+                  stats.skipped->skipped.c_str(), stats.skipped->errorAdded, stats.skipped->errorAddedHigh,
+                  stats.skipped->tolerance,
+                  stats.skipped->secondsPerPassFull > 0
+                      ? 100.0 * (1.0 - stats.skipped->secondsPerPassSkipping / stats.skipped->secondsPerPassFull)
+                      : 0.0,
+                  stats.skipped->probeSeconds);
   };
 }
 

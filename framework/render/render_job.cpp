@@ -8,7 +8,9 @@ namespace ll {
 RenderJob::RenderJob(const Scene& scene, const Accelerator& accel, Technique& technique, const ParamSet& params,
                      RenderSettings settings)
     : scene_(scene), accel_(accel), technique_(technique), params_(params), settings_(settings),
-      frame_(settings.width, settings.height) {}
+      frame_(settings.width, settings.height) {
+  if (settings.lightPaths && technique.splitsLightPaths()) frame_.enableLightPaths();
+}
 
 void RenderJob::run(const std::function<void(int, int)>& onPass) {
   RenderContext ctx{scene_, accel_, params_, settings_, &taskLog_};
@@ -39,6 +41,8 @@ void RenderJob::run(const std::function<void(int, int)>& onPass) {
   stats_.exactFallbacks = taskLog_.exact();
   stats_.taskViolations = taskLog_.violations();
   stats_.referenceTasks = tasks::referenceList();
+  stats_.skipped = technique_.skippedWork();
+  stats_.lightPaths = lightPathShares(frame_);
 }
 
 }  // namespace ll

@@ -10,6 +10,11 @@ nlohmann::json RenderStats::toJson() const {
     rayCounts[std::string(kRayKindNames[static_cast<size_t>(i)])] = work.rays[static_cast<size_t>(i)];
   rayCounts["total"] = work.totalRays();
   const double seconds = renderSeconds > 0.0 ? renderSeconds : 1e-9;
+  nlohmann::json classes = nlohmann::json::object();
+  for (const LightPathShare& s : lightPaths)
+    classes[lightPathClassName(s.cls)] = {{"pattern", lightPathClassPattern(s.cls)},
+                                          {"luminance_share", s.luminanceShare},
+                                          {"relmse_without", s.relMseWithout}};
   return {
       {"scene", scene},
       {"technique", technique},
@@ -36,6 +41,19 @@ nlohmann::json RenderStats::toJson() const {
       {"exact_fallbacks", exactFallbacks},
       {"task_violations", taskViolations},
       {"reference_tasks", referenceTasks},
+      {"light_paths", lightPaths.empty() ? nlohmann::json(nullptr) : classes},
+      {"skipped", skipped ? nlohmann::json{{"what", skipped->skipped},
+                                           {"tolerance_relmse", skipped->tolerance},
+                                           {"error_added_relmse", skipped->errorAdded},
+                                           {"error_added_relmse_95", skipped->errorAddedHigh},
+                                           {"probe_seconds", skipped->probeSeconds},
+                                           {"probe_seconds_per_pass_full", skipped->secondsPerPassFull},
+                                           {"probe_seconds_per_pass_skipping", skipped->secondsPerPassSkipping},
+                                           {"time_saved_fraction",
+                                            skipped->secondsPerPassFull > 0
+                                                ? 1.0 - skipped->secondsPerPassSkipping / skipped->secondsPerPassFull
+                                                : 0.0}}
+                          : nlohmann::json(nullptr)},
   };
 }
 

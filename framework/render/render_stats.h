@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 
@@ -12,6 +13,7 @@
 
 #include "accel/accelerator.h"
 #include "core/ray.h"
+#include "render/light_path_split.h"
 
 namespace ll {
 
@@ -32,6 +34,17 @@ struct WorkCounters {
   }
 };
 
+// What a technique left out because a short measurement said it does not
+// show (--set effects=measured), and what that saved and cost.
+struct SkippedWork {
+  std::string skipped;            // e.g. "diffuse-interreflection, caustics: paths end after their first diffuse bounce"
+  double tolerance = 0.0;         // relMSE the skipped classes were allowed
+  double errorAdded = 0.0;        // relMSE of the picture without them, measured by the probe
+  double errorAddedHigh = 0.0;    // its 95 % upper confidence bound
+  double probeSeconds = 0.0;      // the measurement's own time
+  double secondsPerPassFull = 0.0, secondsPerPassSkipping = 0.0;  // one pass of the probe, without and with skipping
+};
+
 struct RenderStats {
   std::string technique, accelerator, scene;
   int width = 0, height = 0, spp = 0, passes = 0;
@@ -43,6 +56,8 @@ struct RenderStats {
   std::set<std::string> exactFallbacks;             // of those, the ones whose fallback changes nothing but time
   std::map<std::string, std::string> taskViolations;  // task id -> the rule its code broke
   std::string referenceTasks;                       // tasks run by their reference (--reference), "A2.3,A2.5"
+  std::optional<SkippedWork> skipped;               // --set effects=measured: what the technique left out
+  std::vector<LightPathShare> lightPaths;           // each light-path class's share, where the render kept them
 
   nlohmann::json toJson() const;
 };

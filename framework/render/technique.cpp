@@ -1,5 +1,6 @@
 #include "render/technique.h"
 
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <mutex>
@@ -77,13 +78,20 @@ void PixelTechnique::renderPass(const RenderContext& ctx, int pass, FrameBuffer&
             s.pass = pass;
             s.rng = &rng;
             s.position = Vec2(static_cast<float>(x), static_cast<float>(y)) + stratifiedOffset(pass, spp, rng);
+            std::array<Rgb, kLightPathClassCount> classes;
+            if (fb.keepsLightPaths()) {
+              classes.fill(Rgb(0.0f));
+              s.lightPaths = classes.data();
+            }
             takeStubFlag();
             Rgb value = renderSample(ctx, s, tracer);
             if (!isFinite(value)) {
               ++local.nonFinite;
               value = Rgb(0.0f);
+              classes.fill(Rgb(0.0f));
             }
             fb.add(x, y, value);
+            if (s.lightPaths) fb.addLightPaths(x, y, pass, classes.data());
             if (takeStubFlag()) fb.markStub(x, y);
           }
         {

@@ -28,6 +28,7 @@ struct RenderSettings {
   int spp = 1;         // samples per pixel = passes for pixel techniques
   uint64_t seed = 0;   // random streams derive from (seed, pixel, sample)
   std::optional<Camera> camera;  // overrides the scene's camera (the GUI's view); width/height above win
+  bool lightPaths = false;  // keep the estimate split by light-path class, where the technique can split it
 };
 
 // The camera a render uses: settings.camera or the scene's, at the settings' resolution.
@@ -64,6 +65,10 @@ class Technique {
     (void)position;
     return std::nullopt;
   }
+  // Whether renderPass() fills the frame buffer's light-path classes (FrameBuffer::enableLightPaths).
+  virtual bool splitsLightPaths() const { return false; }
+  // What the last prepare() decided to leave out (--set effects=measured), if anything.
+  virtual std::optional<SkippedWork> skippedWork() const { return std::nullopt; }
 };
 
 // One pixel sample as a PixelTechnique sees it.
@@ -72,6 +77,9 @@ struct PixelSample {
   int pass = 0;      // sample index within the pixel
   Vec2 position;     // continuous image position of the sample (pixel centre = x + 0.5)
   Rng* rng = nullptr;
+  // When the frame buffer keeps light-path classes: kLightPathClassCount zeroed values that the
+  // technique adds each contribution to, by its class; they sum to the returned radiance.
+  Rgb* lightPaths = nullptr;
 };
 
 // Base for techniques that compute each pixel sample independently: renders

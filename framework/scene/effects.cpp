@@ -16,6 +16,7 @@ const char* effectName(Effect e) {
     case Effect::GlossyReflection: return "glossy-reflection";
     case Effect::SkyLight: return "sky-light";
     case Effect::Dispersion: return "dispersion";
+    case Effect::Caustics: return "caustics";
   }
   return "?";
 }

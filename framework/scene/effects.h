@@ -21,8 +21,9 @@ enum class Effect : uint32_t {
   GlossyReflection = 1u << 9,        // a rough metal or rough glass: the scene reflected blurred (microfacet BSDF)
   SkyLight = 1u << 10,               // the background lights the scene (a sky colour or HDR image around it)
   Dispersion = 1u << 11,             // glass whose index depends on wavelength (Cauchy): white light splits
+  Caustics = 1u << 12,               // light focused by a mirror or glass onto a diffuse surface (L S+ D)
 };
-constexpr int kEffectCount = 12;
+constexpr int kEffectCount = 13;
 
 class EffectSet {
  public:

@@ -57,7 +57,7 @@ EffectSet analyseEffects(const Scene& s) {
   if (!s.environment.black() && anySurface) e.add(Effect::SkyLight);
   if (hardShadows) e.add(Effect::HardShadows);
   if (softShadows) e.add(Effect::SoftShadows);
-  bool diffuse = false;
+  bool diffuse = false, specular = false;
   for (size_t i = 0; i < s.materials.size(); ++i) {
     if (!used[i]) continue;
     const Material& m = s.materials[i];
@@ -69,11 +69,15 @@ EffectSet analyseEffects(const Scene& s) {
     if (m.texture.kind != Texture::Kind::None) e.add(Effect::Textures);
     if (m.emits()) e.add(Effect::Emission);
     if (!isBlack(m.kd) || m.texture.kind == Texture::Kind::Checker) diffuse = true;
+    if (m.reflectsMirror() || m.transmits() || (m.model == BsdfModel::Conductor && !m.glossyScattering()))
+      specular = true;
   }
   // Light bouncing between surfaces needs two surfaces that see each other: as for shadows, more than one
   // convex object.
   const bool interreflects = s.objects.size() > 1 || (s.objects.size() == 1 && selfShadowing(s.objects[0]));
   if (diffuse && (hasLights || hasAreaLights) && interreflects) e.add(Effect::DiffuseInterreflection);
+  // A mirror or glass that lights a diffuse surface (L S+ D): the same two-surface condition.
+  if (diffuse && specular && (hasLights || hasAreaLights) && interreflects) e.add(Effect::Caustics);
   return e;
 }
 
