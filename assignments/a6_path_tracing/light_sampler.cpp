@@ -8,7 +8,7 @@ namespace ll::a6 {
 
 LightSampler::LightSampler(const Scene& scene)
     : scene_(scene), areaLightOfObject_(scene.objects.size(), -1),
-      count_(scene.lights.size() + scene.areaLights.size()), sky_(!scene.environment.black()) {
+      count_(scene.lights.size() + scene.areaLights.size()), sky_(scene.environment.lightsScene()) {
   if (sky_) ++count_;
   for (size_t i = 0; i < scene.areaLights.size(); ++i)
     areaLightOfObject_[scene.areaLights[i].object] = static_cast<int>(i);
@@ -36,6 +36,7 @@ LightSample LightSampler::sample(float uChoice, Vec2 u, const Vec3& from) const 
     s.emission = sky.radiance;
     s.pdf = choice * sky.pdf / (kSkyDistance * kSkyDistance);
     s.castShadow = true;
+    s.sky = true;
     return s;
   }
   const AreaLight& light = scene_.areaLights[index - scene_.lights.size()];

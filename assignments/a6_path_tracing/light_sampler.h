@@ -25,6 +25,7 @@ struct LightSample {
   float pdf = 0.0f;      // Area: density of y per unit area, the light's choice included; else: choice probability
   bool castShadow = true;  // false: nothing can stand between this light and a surface (no shadow ray needed)
   const Material* material = nullptr;  // Area: the emitter's material (for its spectrum); else nullptr
+  bool sky = false;      // the sample is on the sky (an Area sample at kSkyDistance)
 };
 
 // Lights chosen uniformly (each point, directional and area light, and the

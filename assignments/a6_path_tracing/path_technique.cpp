@@ -113,7 +113,9 @@ class PathTracing final : public PixelTechnique {
           if (strategy_ == Strategy::Light) weight = 0.0f;
           if (strategy_ == Strategy::Mis) weight = a6::powerHeuristic(bsdfPdf, lights_->pdfSky(ray.dir));
         }
-        add(throughput * colour(scene.environment.radiance(ray.dir)) * weight, path.atLight());
+        // A backdrop (lights_scene false) is seen, directly or through mirrors and glass, but lights nothing.
+        if (scene.environment.lightsScene() || path.atLight(true) != LightPathClass::SkyLight)
+          add(throughput * colour(scene.environment.radiance(ray.dir)) * weight, path.atLight(true));
         break;
       }
       const Rgb sigma = mediumAbsorption(media);  // Beer-Lambert along the segment just travelled
@@ -149,16 +151,17 @@ class PathTracing final : public PixelTechnique {
 
       // This surface's event when it scatters through a smooth lobe: G for a rough microfacet surface.
       const PathVertex smooth = m.glossyScattering() ? PathVertex::Glossy : PathVertex::Diffuse;
-      const LightPathClass litHere = path.then(smooth).atLight();
+      const LightPathState litHere = path.then(smooth);
       // The light sample's random numbers are drawn even when its class is left out: the other classes
       // then see the same random streams as a full render.
       if (bsdf.hasSmoothLobes() && strategy_ != Strategy::Bsdf && !lights_->empty()) {
         a6::LightSample light = lights_->sample(rng.uniform(), rng.uniform2(), x.position);
-        if (keep_ & lightPathBit(litHere)) {
+        if (keep_ & lightPathBit(litHere.atLight(light.sky))) {
           if (spectral_)
             light.emission = spectral_->at(light.material ? light.material->emissionSpectrum.get() : nullptr,
                                            light.emission, wl);
-          add(throughput * a6::nextEventEstimate(x, light, bsdf, tracer, strategy_ == Strategy::Mis), litHere);
+          add(throughput * a6::nextEventEstimate(x, light, bsdf, tracer, strategy_ == Strategy::Mis),
+              litHere.atLight(light.sky));
         }
       }
       const float uLobe = rng.uniform();
@@ -219,6 +222,7 @@ class PathTracing final : public PixelTechnique {
     keep_ = fixedKeep_ & ~skip;
     SkippedWork w;
     w.tolerance = tolerance;
+    w.leftOut = skip;
     const Estimate added = probe.relMseWithout(skip);
     w.errorAdded = added.value;
     w.errorAddedHigh = added.high;

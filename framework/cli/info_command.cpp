@@ -1,4 +1,10 @@
-// lightlab info SCENE [--json]   |   lightlab info --list
+// lightlab info SCENE [--json] [--tolerance R] [--budget S] [--no-probe]   |   lightlab info --list
+//
+// A scene's content, the effects it makes possible ("present"), and -- from a
+// short seeded path-traced probe (modules/effects_measurement.h) -- the
+// effects it calls for, measured, with the cheapest technique within the
+// tolerance.
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 
@@ -6,6 +12,8 @@
 
 #include "cli/commands.h"
 #include "core/error.h"
+#include "core/progress.h"
+#include "modules/effects_measurement.h"
 #include "modules/registry.h"
 #include "scene/scene_loader.h"
 
@@ -15,8 +23,77 @@ namespace {
 
 struct InfoOptions {
   std::string scene;
-  bool json = false, list = false;
+  bool json = false, list = false, noProbe = false;
+  double tolerance = kDefaultEffectsTolerance;
+  LightPathProbeSettings probe;
 };
+
+// "33.1 % (32.8-33.4)": a share with its 95 % interval.
+std::string percent(const Estimate& e) {
+  char buf[96];
+  if (e.high <= 0.0) return "0";
+  std::snprintf(buf, sizeof buf, "%.3g %% (%.3g-%.3g)", 100.0 * e.value, 100.0 * e.low, 100.0 * e.high);
+  return buf;
+}
+
+std::string relMse(const Estimate& e) {
+  char buf[96];
+  if (e.high <= 0.0) return "0";
+  std::snprintf(buf, sizeof buf, "%.2g (%.2g-%.2g)", e.value, e.low, e.high);
+  return buf;
+}
+
+std::string seconds(double s) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, s < 10.0 ? "%.2g s" : "%.0f s", s);
+  return buf;
+}
+
+void printMeasurement(const EffectsReport& r) {
+  std::printf("\nmeasured   %s, %dx%d px, %d spp (%d batches of %d), seed %llu: %.1f s (budget %.0f s)\n",
+              r.probeTechnique.c_str(), r.width, r.height, r.spp, r.batches, r.spp / std::max(1, r.batches),
+              static_cast<unsigned long long>(r.seed), r.probeSeconds, r.budgetSeconds);
+  std::printf("           an effect is called for when the picture without it differs by more than relMSE %g\n",
+              r.tolerance);
+  std::printf("  %-24s %-24s %-24s %s\n", "effect", "share of the light", "relMSE without it", "called for");
+  std::string unmeasured;
+  for (const EffectMeasurement& m : r.effects) {
+    if (!m.measured) {
+      if (m.present) unmeasured += std::string(unmeasured.empty() ? "" : ", ") + effectName(m.effect);
+      continue;
+    }
+    if (!m.present && m.share.high <= 0.0) continue;
+    std::printf("  %-24s %-24s %-24s %s\n", effectName(m.effect), percent(m.share).c_str(),
+                relMse(m.relMseWithout).c_str(), m.calledFor ? "yes" : "no");
+  }
+  if (!unmeasured.empty())
+    std::printf("  not light paths, called for as present: %s\n", unmeasured.c_str());
+  const auto occurs = [&](Effect e) {  // the probe found light of this class
+    for (const EffectMeasurement& m : r.effects)
+      if (m.effect == e) return m.share.high > 0.0;
+    return false;
+  };
+  std::printf("\n  %-26s %-22s %-24s %s\n", "technique", "time", "relMSE of what it misses", "within tolerance");
+  for (const TechniqueVerdict& v : r.techniques) {
+    std::string time = seconds(v.seconds);
+    if (v.passes > 1) time += " (" + std::to_string(v.passes) + " passes)";
+    std::string verdict = v.withinTolerance ? "yes" : "no";
+    std::vector<std::string> missed;
+    for (int c = 0; c < kLightPathClassCount; ++c)
+      if ((v.missedClasses & lightPathBit(lightPathClassAt(c))) && occurs(lightPathClassEffect(lightPathClassAt(c))))
+        missed.emplace_back(lightPathClassName(lightPathClassAt(c)));
+    if (!missed.empty()) verdict += ": misses " + joinNames(missed);
+    if (!v.missedUnmeasured.empty())
+      verdict += std::string(missed.empty() ? ": misses " : "; and ") + joinNames(v.missedUnmeasured.names());
+    std::printf("  %-26s %-22s %-24s %s\n", v.technique.c_str(), time.c_str(), relMse(v.missedError).c_str(),
+                verdict.c_str());
+  }
+  std::printf("  (time: one pass at the probe's size with a BVH, preparation included; path: the passes that bring its "
+              "noise within the tolerance)\n");
+  std::printf("cheapest   %s\n", r.cheapest ? (r.cheapest->c_str() + std::string(" (the fastest within relMSE ") +
+                                                 std::to_string(r.tolerance).substr(0, 6) + ")").c_str()
+                                            : "(no technique stays within the tolerance)");
+}
 
 nlohmann::json vec(const Vec3& v) { return {v.x, v.y, v.z}; }
 
@@ -73,17 +150,40 @@ void printList() {
 
 }  // namespace
 
-Command addInfoCommand(CLI::App& app, const GlobalOptions&) {
+Command addInfoCommand(CLI::App& app, const GlobalOptions& global) {
   auto o = std::make_shared<InfoOptions>();
   CLI::App* cmd = app.add_subcommand("info", "Describe a scene: content, effects it calls for, cheapest technique");
   cmd->add_option("scene", o->scene, "Scene file (.json or .obj)");
   cmd->add_flag("--json", o->json, "Print JSON instead of text");
   cmd->add_flag("--list", o->list, "List the registered techniques and accelerators with their parameters");
-  return [o]() {
+  cmd->add_option("--tolerance", o->tolerance,
+                  "relMSE a left-out effect may change the picture by and not be called for")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
+  cmd->add_option("--budget", o->probe.budgetSeconds, "Seconds the path-traced probe may take (at least 4 batches)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 3600.0));
+  cmd->add_option("--probe-width", o->probe.width, "Width of the probe in pixels (height: the camera's aspect)")
+      ->capture_default_str()
+      ->check(CLI::Range(8, 1024));
+  cmd->add_option("--seed", o->probe.seed, "Seed of the probe")->capture_default_str();
+  cmd->add_flag("--no-probe", o->noProbe, "Only the content and the effects present (no measurement)");
+  return [o, &global]() {
     if (o->list) return printList();
     if (o->scene.empty()) throwUserError("info: give a SCENE file, or --list");
     const Scene scene = loadScene(o->scene);
-    const nlohmann::json j = describe(scene);
+    nlohmann::json j = describe(scene);
+    std::optional<EffectsReport> report;
+    if (!o->noProbe) {
+      const AcceleratorInfo& a = findAccelerator("bvh");
+      const auto accel = buildAccelerator(a, ParamSet(a.name, a.params), scene.geometry);
+      ProgressBar bar("info: measuring effects", 1.0, global.quiet || o->json);
+      report = measureSceneEffects(scene, *accel, o->tolerance, o->probe, [&](const std::string& phase, double f) {
+        bar.update(phase == "probe" ? 0.5 * f : 0.5 + 0.5 * f);
+      });
+      bar.finish();
+      j["measured"] = report->toJson();
+    }
     if (o->json) {
       std::cout << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
       return;
@@ -98,9 +198,10 @@ Command addInfoCommand(CLI::App& app, const GlobalOptions&) {
                                               : "a constant colour (a light for path)");
     std::printf("camera     %dx%d, fov %.2f deg\n", scene.camera.width, scene.camera.height,
                 static_cast<double>(scene.camera.fovYDeg));
-    std::printf("effects    %s\n", joinNames(scene.effects.names()).c_str());
+    std::printf("present    %s\n", joinNames(scene.effects.names()).c_str());
+    std::printf("           (the effects the scene's content makes possible, whatever their size)\n");
     const TechniqueInfo* cheapest = cheapestTechniqueFor(scene.effects);
-    std::printf("cheapest   %s\n",
+    std::printf("simulates all present: %s\n",
                 cheapest ? cheapest->name.c_str() : "(no registered technique simulates all of these effects)");
     for (const TechniqueInfo& t : techniques()) {
       const EffectSet missed = scene.effects.minus(t.simulates);
@@ -111,6 +212,7 @@ Command addInfoCommand(CLI::App& app, const GlobalOptions&) {
       }
       std::printf("  %-16s %s\n", t.name.c_str(), line.c_str());
     }
+    if (report) printMeasurement(*report);
   };
 }
 

@@ -13,6 +13,7 @@ const char* lightPathClassPattern(LightPathClass c) {
     case LightPathClass::GlossyReflection: return "L .* D G S* E";
     case LightPathClass::DiffuseInterreflection: return "L .* D D S* E";
     case LightPathClass::Caustics: return "L .* S D .* E";
+    case LightPathClass::SkyLight: return "Lsky .* D .* E";
   }
   return "?";
 }
@@ -26,6 +27,7 @@ Effect lightPathClassEffect(LightPathClass c) {
     case LightPathClass::GlossyReflection: return Effect::GlossyReflection;
     case LightPathClass::DiffuseInterreflection: return Effect::DiffuseInterreflection;
     case LightPathClass::Caustics: return Effect::Caustics;
+    case LightPathClass::SkyLight: return Effect::SkyLight;
   }
   return Effect::DirectLighting;
 }
@@ -47,7 +49,8 @@ LightPathState LightPathState::then(PathVertex v) const {
   return s;
 }
 
-LightPathClass LightPathState::atLight() const {
+LightPathClass LightPathState::atLight(bool sky) const {
+  if (sky && nonSpecular_ > 0) return LightPathClass::SkyLight;
   if (caustic_) return LightPathClass::Caustics;
   if (nonSpecular_ >= 2) return firstGlossy_ ? LightPathClass::GlossyReflection : LightPathClass::DiffuseInterreflection;
   if (specularFirst_) return refractedFirst_ ? LightPathClass::Refraction : LightPathClass::MirrorReflection;
@@ -74,7 +77,7 @@ LightPathMask LightPathState::reachable() const {
       while (n > 0) {
         const LightPathState s = work[--n];
         states[s.index()] = s;
-        mask[s.index()] = lightPathBit(s.atLight());
+        mask[s.index()] = lightPathBit(s.atLight(false)) | lightPathBit(s.atLight(true));
         for (PathVertex v : {PathVertex::Diffuse, PathVertex::Glossy, PathVertex::SpecularReflection,
                              PathVertex::SpecularRefraction}) {
           const LightPathState t = s.then(v);

@@ -13,10 +13,11 @@
 //   glossy-reflection       L .* X G S* E           the scene blurred in a rough surface
 //   diffuse-interreflection L .* X D S* E           indirect diffuse light (radiosity's K^2 L_e, ...)
 //   caustics                L .* S X .* E           light focused by mirrors or glass onto a surface
+//   sky-light               Lsky .* X .* E          the sky lighting a surface (any path from the sky with a D or G)
 //
-// A contribution belongs to the first class in this order whose pattern it
-// matches, read from the eye (caustics before the rest), so every path lands
-// in exactly one class. Blinn-Phong's highlight lobe counts as D: it is the
+// Every path lands in exactly one class: sky-light first (the light is the
+// sky and the path scattered off a surface), then caustics, then the first
+// of the others whose pattern it matches. Blinn-Phong's highlight lobe counts as D: it is the
 // local model's, and radiosity and ray casting treat it as such.
 #pragma once
 
@@ -35,8 +36,9 @@ enum class LightPathClass : uint8_t {
   GlossyReflection,
   DiffuseInterreflection,
   Caustics,
+  SkyLight,
 };
-inline constexpr int kLightPathClassCount = 7;
+inline constexpr int kLightPathClassCount = 8;
 
 const char* lightPathClassName(LightPathClass c);     // the effect's name, e.g. "direct-lighting"
 const char* lightPathClassPattern(LightPathClass c);  // Heckbert's notation, e.g. "L D E"
@@ -57,8 +59,8 @@ class LightPathState {
  public:
   // The state after one more event, further from the eye.
   LightPathState then(PathVertex v) const;
-  // The class of the path if a light ends it here.
-  LightPathClass atLight() const;
+  // The class of the path if a light ends it here (the sky: sky = true).
+  LightPathClass atLight(bool sky = false) const;
   // The classes any continuation of this path (including ending at a light now) can reach.
   LightPathMask reachable() const;
 

@@ -84,6 +84,28 @@ Image LightPathProbe::classImage(LightPathClass c) const {
   return mean;
 }
 
+double LightPathProbe::noiseRelMsePerPass() const {
+  const size_t k = batches_.size();
+  if (k < 2) return 0.0;
+  std::vector<Image> sums;  // each batch's picture
+  for (const auto& batch : batches_) {
+    Image sum(width_, height_);
+    for (const Image& image : batch)
+      for (size_t i = 0; i < image.pixels().size(); ++i) sum.pixels()[i] += image.pixels()[i];
+    sums.push_back(std::move(sum));
+  }
+  double total = 0.0;
+  for (size_t i = 0; i < picture_.pixels().size(); ++i)
+    for (int ch = 0; ch < 3; ++ch) {
+      const auto p = static_cast<double>(picture_.pixels()[i][ch]);
+      double var = 0.0;
+      for (const Image& s : sums) var += (static_cast<double>(s.pixels()[i][ch]) - p) * (static_cast<double>(s.pixels()[i][ch]) - p);
+      total += var / static_cast<double>(k - 1) / (p * p + 1e-2);
+    }
+  // A batch's variance is the per-sample variance over sppPerBatch samples.
+  return total / static_cast<double>(3 * picture_.pixels().size()) * sppPerBatch_;
+}
+
 Estimate LightPathProbe::share(LightPathClass c) const {
   std::vector<double> shares;
   for (const auto& batch : batches_) {

@@ -24,7 +24,7 @@ inline constexpr double kDefaultEffectsTolerance = 1e-3;
 struct LightPathProbeSettings {
   int width = 128;              // pixels; the height keeps the camera's aspect ratio
   int sppPerBatch = 4;          // samples per pixel of one batch
-  int batches = 16;             // batches rendered unless the time budget ends them sooner
+  int batches = 64;             // batches rendered unless the time budget ends them sooner
   int minBatches = 4;           // batches rendered whatever the budget
   double budgetSeconds = 10.0;  // wall-clock limit of the path tracing
   uint64_t seed = 1;
@@ -54,6 +54,9 @@ class LightPathProbe {
   // channels of c^2 / (p^2 + 1e-2), c the classes' sum. c^2 is estimated without bias from pairs of
   // independent batches (the noise of one batch would otherwise count as error); the interval is the jackknife's.
   Estimate relMseWithout(LightPathMask classes) const;
+  // The relMSE of a one-sample-per-pixel picture's noise against the picture: mean over pixels and channels of
+  // the per-sample variance / (p^2 + 1e-2), from the spread of the batches. A render of n passes has 1/n of it.
+  double noiseRelMsePerPass() const;
   // The mean of all batches: the picture, and one class of it.
   const Image& picture() const { return picture_; }
   Image classImage(LightPathClass c) const;

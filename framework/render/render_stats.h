@@ -37,7 +37,8 @@ struct WorkCounters {
 // What a technique left out because a short measurement said it does not
 // show (--set effects=measured), and what that saved and cost.
 struct SkippedWork {
-  std::string skipped;            // e.g. "diffuse-interreflection, caustics: paths end after their first diffuse bounce"
+  std::string skipped;            // the classes left out, by name ("diffuse-interreflection, caustics")
+  LightPathMask leftOut = 0;      // ... as a mask (includes classes the scene does not produce)
   double tolerance = 0.0;         // relMSE the skipped classes were allowed
   double errorAdded = 0.0;        // relMSE of the picture without them, measured by the probe
   double errorAddedHigh = 0.0;    // its 95 % upper confidence bound

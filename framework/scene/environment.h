@@ -30,6 +30,10 @@ class Environment {
   // Radiance arriving from direction dir (unit, pointing away from the scene). Finite, >= 0.
   Rgb radiance(const Vec3& dir) const;
   bool black() const { return image_ ? black_ : isBlack(color_); }
+  // Whether the sky lights the scene (path samples it and counts it where a path escapes after a surface). False:
+  // a backdrop, seen directly and in mirrors and glass but lighting nothing, as in Whitted's 1980 scene.
+  bool lightsScene() const { return lightsScene_ && !black(); }
+  void setLightsScene(bool on) { lightsScene_ = on; }
   bool isImage() const { return image_ != nullptr; }
   // Mean radiance over the sphere: what a technique that cannot look the sky up shows (the rasterizer's clear).
   Rgb average() const { return average_; }
@@ -54,6 +58,7 @@ class Environment {
   float strength_ = 1.0f;
   float rotation_ = 0.0f;  // radians
   bool black_ = true;
+  bool lightsScene_ = true;
   Rgb average_{0.0f};
   // Sampling: rows by marginal CDF, columns by each row's conditional CDF (each of size n + 1, from 0 to 1).
   std::vector<float> rowCdf_, columnCdf_;

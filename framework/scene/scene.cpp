@@ -47,14 +47,14 @@ EffectSet analyseEffects(const Scene& s) {
   for (const SceneObject& o : s.objects)
     if (o.primCount > 0) used[o.material] = true;
   const bool hasLights = !s.lights.empty();
-  const bool hasAreaLights = !s.areaLights.empty() || !s.environment.black();  // the sky lights like an area light
+  const bool hasAreaLights = !s.areaLights.empty() || s.environment.lightsScene();  // the sky lights like an area light
   bool hardShadows = false, softShadows = false;
   for (const Light& l : s.lights) hardShadows = hardShadows || l.canBeOccluded;
   for (const AreaLight& l : s.areaLights) softShadows = softShadows || l.canBeOccluded;
   if (hasLights || !s.areaLights.empty()) e.add(Effect::DirectLighting);
   bool anySurface = false;
   for (const SceneObject& o : s.objects) anySurface = anySurface || o.primCount > 0;
-  if (!s.environment.black() && anySurface) e.add(Effect::SkyLight);
+  if (s.environment.lightsScene() && anySurface) e.add(Effect::SkyLight);
   if (hardShadows) e.add(Effect::HardShadows);
   if (softShadows) e.add(Effect::SoftShadows);
   bool diffuse = false, specular = false;

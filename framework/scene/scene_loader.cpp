@@ -437,12 +437,21 @@ Camera parseCamera(const JsonNode& n) {
   return c;
 }
 
-// "background": [r, g, b] (a constant sky) or {"image": "sky.hdr", "strength": 1, "rotation_deg": 0}.
+// "background": [r, g, b] (a constant sky), {"color": [r, g, b]} or {"image": "sky.hdr", "strength": 1,
+// "rotation_deg": 0}; an object may say "lights_scene": false (a backdrop that lights nothing).
 Environment parseBackground(const JsonNode& root, const std::string& baseDir) {
   if (!root.has("background")) return Environment(Rgb(0.0f));
   const JsonNode n = root.child("background");
   if (!n.json().is_object()) return Environment(root.color("background", Rgb(0.0f)));
-  n.allowOnly({"image", "strength", "rotation_deg"});
+  n.allowOnly({"color", "image", "strength", "rotation_deg", "lights_scene"});
+  const bool lightsScene = n.boolean("lights_scene", true);
+  if (n.has("color")) {
+    if (n.has("image") || n.has("strength") || n.has("rotation_deg"))
+      n.fail("background: give \"color\" or \"image\" (with strength, rotation_deg), not both");
+    Environment sky(n.color("color", Rgb(0.0f)));
+    sky.setLightsScene(lightsScene);
+    return sky;
+  }
   const JsonNode image = n.child("image");
   if (!image.json().is_string()) image.fail(image.what() + " must be a file name (an equirectangular .hdr or .pfm)");
   const std::string file = sceneRelativeFile(image, baseDir, "sky image");
@@ -451,7 +460,9 @@ Environment parseBackground(const JsonNode& root, const std::string& baseDir) {
   auto sky = std::make_shared<Image>(loadImage(file));
   if (sky->width() < 2 || sky->height() < 1)
     image.fail("sky image " + file + " is too small (allowed: at least 2 x 1 pixels, 2:1 equirectangular)");
-  return Environment(std::move(sky), strength, rotation);
+  Environment environment(std::move(sky), strength, rotation);
+  environment.setLightsScene(lightsScene);
+  return environment;
 }
 
 Scene parseJsonScene(const std::string& text, const std::string& file, const std::string& baseDir) {

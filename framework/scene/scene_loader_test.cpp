@@ -151,6 +151,10 @@ TEST(SceneLoader, WhittedEffects) {
   EXPECT_TRUE(s.effects.has(Effect::HardShadows));
   EXPECT_TRUE(s.effects.has(Effect::Textures));
   EXPECT_FALSE(s.effects.has(Effect::SoftShadows));
+  // Its light-blue background is a backdrop (lights_scene false): seen, lighting nothing.
+  EXPECT_FALSE(s.effects.has(Effect::SkyLight));
+  EXPECT_FALSE(s.environment.lightsScene());
+  EXPECT_FALSE(s.environment.black());
   EXPECT_EQ(s.lights.size(), 2u);
   EXPECT_EQ(s.geometry.spheres.size(), 3u);
   EXPECT_EQ(s.camera.width, 640);
