@@ -226,22 +226,28 @@ class PathTracing final : public PixelTechnique {
     const Estimate added = probe.relMseWithout(skip);
     w.errorAdded = added.value;
     w.errorAddedHigh = added.high;
-    w.secondsPerPassFull = probe.secondsPerPass();
     std::string names;
     for (int c = 0; c < kLightPathClassCount; ++c)
       if (skip & present & lightPathBit(lightPathClassAt(c)))
         names += std::string(names.empty() ? "" : ", ") + lightPathClassName(lightPathClassAt(c));
     w.skipped = names.empty() ? "nothing: every class the scene has shows" : names;
-    // The saving, measured: one more probe batch with the classes left out.
-    PathTracing skipping(keep_);
-    RenderSettings rs;
-    rs.width = probe.width();
-    rs.height = probe.height();
-    rs.spp = ps.sppPerBatch;
-    rs.seed = ps.seed;
-    RenderJob job(ctx.scene, ctx.accel, skipping, probeParams, rs);
-    job.run();
-    w.secondsPerPassSkipping = (job.stats().renderSeconds + job.stats().prepareSeconds) / rs.spp;
+    // The saving, measured where something the scene has is left out: the probe's first batches again,
+    // skipping, against the same batches in full (timed now, next to it, so the machine's load is alike).
+    if (skip & present) {
+      const auto timePerPass = [&](LightPathMask keep) {
+        PathTracing technique(keep);
+        RenderSettings rs;
+        rs.width = probe.width();
+        rs.height = probe.height();
+        rs.spp = ps.sppPerBatch * ps.minBatches;
+        rs.seed = ps.seed;
+        RenderJob job(ctx.scene, ctx.accel, technique, probeParams, rs);
+        job.run();
+        return job.stats().renderSeconds / rs.spp;
+      };
+      w.secondsPerPassFull = timePerPass(fixedKeep_);
+      w.secondsPerPassSkipping = timePerPass(keep_);
+    }
     w.probeSeconds = timer.seconds();
     skipped_ = w;
   }

@@ -150,15 +150,16 @@ Command addRenderCommand(CLI::App& app, const GlobalOptions& global) {
     if (!classLine.empty())
       std::printf("light paths (share of the luminance; one image each beside %s): %s\n", o->output.c_str(),
                   classLine.c_str());
-    if (stats.skipped)
-      std::printf("effects=measured: left out %s; error added relMSE %.2g (95 %% bound %.2g, tolerance %.2g); "
-                  "%.0f %% less time per sample on the probe (%.1f s of probing)\n",
-                  stats.skipped->skipped.c_str(), stats.skipped->errorAdded, stats.skipped->errorAddedHigh,
-                  stats.skipped->tolerance,
-                  stats.skipped->secondsPerPassFull > 0
-                      ? 100.0 * (1.0 - stats.skipped->secondsPerPassSkipping / stats.skipped->secondsPerPassFull)
-                      : 0.0,
-                  stats.skipped->probeSeconds);
+    if (stats.skipped) {
+      const SkippedWork& w = *stats.skipped;
+      char saved[128] = "no time saved";
+      if (w.secondsPerPassSkipping > 0.0 && w.secondsPerPassFull > 0.0)
+        std::snprintf(saved, sizeof saved, "%.0f %% less time per sample (measured on the probe)",
+                      100.0 * (1.0 - w.secondsPerPassSkipping / w.secondsPerPassFull));
+      std::printf("effects=measured: left out %s; error added relMSE %.2g (95 %% bound %.2g, tolerance %.2g); %s; "
+                  "%.1f s of probing\n",
+                  w.skipped.c_str(), w.errorAdded, w.errorAddedHigh, w.tolerance, saved, w.probeSeconds);
+    }
   };
 }
 
