@@ -49,7 +49,7 @@ std::string seconds(double s) {
   return buf;
 }
 
-void printMeasurement(const EffectsReport& r) {
+void printMeasurement(const EffectsReport& r, int camWidth, int camHeight) {
   std::printf("\nmeasured   %s, %dx%d px, %d spp (%d batches of %d), seed %llu: %.1f s (budget %.0f s)\n",
               r.probeTechnique.c_str(), r.width, r.height, r.spp, r.batches, r.spp / std::max(1, r.batches),
               static_cast<unsigned long long>(r.seed), r.probeSeconds, r.budgetSeconds);
@@ -68,6 +68,10 @@ void printMeasurement(const EffectsReport& r) {
   }
   if (!unmeasured.empty())
     std::printf("  not light paths, called for as present: %s\n", unmeasured.c_str());
+  if (r.unseenPointLightCaustics)
+    std::printf("  caustics of the point and directional lights are not measured: a path tracer cannot find light\n"
+                "  from a point through mirrors or glass onto a surface (L S+ D; whitted's filtered shadow rays\n"
+                "  approximate it, unfocused)\n");
   const auto occurs = [&](Effect e) {  // the probe found light of this class
     for (const EffectMeasurement& m : r.effects)
       if (m.effect == e) return m.share.high > 0.0;
@@ -88,8 +92,10 @@ void printMeasurement(const EffectsReport& r) {
     std::printf("  %-26s %-22s %-24s %s\n", v.technique.c_str(), time.c_str(), relMse(v.missedError).c_str(),
                 verdict.c_str());
   }
-  std::printf("  (time: one pass at the probe's size with a BVH, preparation included; path: the passes that bring its "
-              "noise within the tolerance)\n");
+  std::printf("  (time: for the camera's %dx%d picture, estimated from one pass measured at the probe's size with a "
+              "BVH, preparation included;\n   path: the passes that bring its noise within half the tolerance. What it "
+              "misses: the light paths it cannot follow;\n   its own model's differences, such as the ambient term, are "
+              "not counted: `lightlab study effects` measures them)\n", camWidth, camHeight);
   std::printf("cheapest   %s\n", r.cheapest ? (r.cheapest->c_str() + std::string(" (the fastest within relMSE ") +
                                                  std::to_string(r.tolerance).substr(0, 6) + ")").c_str()
                                             : "(no technique stays within the tolerance)");
@@ -177,6 +183,7 @@ Command addInfoCommand(CLI::App& app, const GlobalOptions& global) {
     if (!o->noProbe) {
       const AcceleratorInfo& a = findAccelerator("bvh");
       const auto accel = buildAccelerator(a, ParamSet(a.name, a.params), scene.geometry);
+      setPrecomputationCache(false);  // each technique's time includes its own precomputation (radiosity's solve)
       ProgressBar bar("info: measuring effects", 1.0, global.quiet || o->json);
       report = measureSceneEffects(scene, *accel, o->tolerance, o->probe, [&](const std::string& phase, double f) {
         bar.update(phase == "probe" ? 0.5 * f : 0.5 + 0.5 * f);
@@ -212,7 +219,7 @@ Command addInfoCommand(CLI::App& app, const GlobalOptions& global) {
       }
       std::printf("  %-16s %s\n", t.name.c_str(), line.c_str());
     }
-    if (report) printMeasurement(*report);
+    if (report) printMeasurement(*report, scene.camera.width, scene.camera.height);
   };
 }
 

@@ -17,6 +17,7 @@
 #include "gpu/offscreen_gl.h"
 #endif
 #include "render/cost_image.h"
+#include "render/light_path_mosaic.h"
 #include "render/render_job.h"
 
 namespace ll::cli {
@@ -123,6 +124,12 @@ Command addRenderCommand(CLI::App& app, const GlobalOptions& global) {
                     100.0 * c.luminanceShare);
       classLine += part;
     }
+    if (!stats.lightPaths.empty()) {  // and all of them side by side: OUT.light-paths.png
+      const fs::path out(o->output);
+      saveImage(lightPathMosaic(job.frame()).image,
+                (out.parent_path() / (out.stem().string() + ".light-paths" + out.extension().string())).string(),
+                ToneMap{o->exposure});
+    }
     if (!o->statsPath.empty()) {
       createParentDirectory(o->statsPath);
       std::ofstream out(o->statsPath);
@@ -148,7 +155,7 @@ Command addRenderCommand(CLI::App& app, const GlobalOptions& global) {
     std::printf("wrote %s (%dx%d, %d spp, %s, %.3f s render%s)\n", o->output.c_str(), settings.width,
                 settings.height, settings.spp, s.technique->name.c_str(), stats.renderSeconds, speed);
     if (!classLine.empty())
-      std::printf("light paths (share of the luminance; one image each beside %s): %s\n", o->output.c_str(),
+      std::printf("light paths (share of the luminance; one image each, and all side by side in .light-paths, beside %s): %s\n", o->output.c_str(),
                   classLine.c_str());
     if (stats.skipped) {
       const SkippedWork& w = *stats.skipped;

@@ -22,6 +22,7 @@
 #include <sstream>
 
 #include "cli/commands.h"
+#include "cli/effects_study.h"
 #include "cli/scene_setup.h"
 #include "core/base64.h"
 #include "core/error.h"
@@ -239,6 +240,14 @@ Command addStudyCommand(CLI::App& app, const GlobalOptions& global) {
   CLI::App* cmd = app.add_subcommand("study", "Accuracy against time: sweep a knob, time each render, plot its error");
   std::string builtinHelp;
   for (const BuiltinStudy& b : builtinStudies()) builtinHelp += std::string("\n  ") + b.name + ": " + b.what;
+  builtinHelp += "\n  effects: the effects each scene calls for, measured, and every technique's error against "
+                 "path-traced ground truth against its time (--scenes, --tolerance)";
+  auto effects = std::make_shared<EffectsStudyOptions>();
+  cmd->add_option("--scenes", effects->scenes, "study effects: the scenes (default: eight bundled ones)")
+      ->delimiter(',');
+  cmd->add_option("--tolerance", effects->tolerance, "study effects: the relMSE a technique may be off by")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
   cmd->add_option("scene", o->scene, "Scene file (.json or .obj), or a built-in study:" + builtinHelp)->required();
   cmd->add_option("--knob", o->knob, "NAME=v1,v2,...: a technique or accelerator parameter, spp, or accel");
   cmd->add_option("-t,--technique", o->techniques,
@@ -263,8 +272,14 @@ Command addStudyCommand(CLI::App& app, const GlobalOptions& global) {
   o->cache = defaultReferenceCache();
   cmd->add_option("--cache", o->cache,
                   "Folder where rendered references are kept and reused (\"\" = none; default: " + o->cache + ")");
-  return [o, width, &global]() {
+  return [o, width, effects, &global]() {
     o->widthGiven = width->count() > 0;
+    if (o->scene == "effects") {
+      effects->out = o->out;
+      if (o->widthGiven) effects->width = o->width;
+      if (o->referenceSpp > 0) effects->referenceSpp = o->referenceSpp;
+      return runEffectsStudy(*effects, global.quiet);
+    }
     setPrecomputationCache(false);  // each render's time includes its own precomputation (radiosity's solve)
     for (const BuiltinStudy& b : builtinStudies()) {
       if (o->scene != b.name) continue;

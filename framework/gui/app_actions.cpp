@@ -50,6 +50,8 @@ const char* viewName(PaneView view) {
       return "nodes";
     case PaneView::PrimitivesTested:
       return "primitives";
+    case PaneView::LightPaths:
+      return "light-paths";
     case PaneView::Image:
       break;
   }
@@ -59,6 +61,7 @@ const char* viewName(PaneView view) {
 PaneView viewFromName(const std::string& name) {
   if (name == "nodes") return PaneView::NodesVisited;
   if (name == "primitives") return PaneView::PrimitivesTested;
+  if (name == "light-paths") return PaneView::LightPaths;
   return PaneView::Image;
 }
 
@@ -369,7 +372,7 @@ void refreshPanes(AppState& app) {
     pane.encodedExposure = app.exposure;
     bg.post("encode " + std::to_string(i),
             [image = pane.shown.image, mail = pane.display, e = app.exposure,
-             cost = pane.shown.view != PaneView::Image, version = pane.shown.version] {
+             cost = isCostView(pane.shown.view), version = pane.shown.version] {
               float scale = 0.0f;
               DisplayImage d = cost ? encodeForDisplay(costHeatmap(*image, 0.0f, &scale), 0.0f)
                                     : encodeForDisplay(*image, e);

@@ -27,7 +27,10 @@ struct Item {
 
 std::vector<Item> itemsOf(const PaneState& p) {
   std::vector<Item> items{{"technique", p.technique}, {"accelerator", p.accelerator}};
-  if (p.view != PaneView::Image) items.push_back({"view", p.view == PaneView::NodesVisited ? "nodes visited" : "primitives tested"});
+  if (p.view != PaneView::Image)
+    items.push_back({"view", p.view == PaneView::NodesVisited       ? "nodes visited"
+                             : p.view == PaneView::PrimitivesTested ? "primitives tested"
+                                                                    : "light paths"});
   items.push_back({"spp", std::to_string(p.spp) + " spp"});
   const auto params = [&](const ParamSet& set, const std::string& prefix) {
     for (const ParamDecl& d : set.decls()) {

@@ -15,6 +15,11 @@
 
 namespace ll::gui {
 
+std::string viewShows(PaneView v, const std::string& technique, const std::string& accelerator) {
+  if (isCostView(v)) return accelerator + " cost";
+  return v == PaneView::LightPaths ? technique + " light paths" : technique;
+}
+
 namespace {
 // Thrown from a superseded request's progress report; caught (and dropped) by the worker loop.
 struct Superseded : std::exception {
@@ -177,8 +182,7 @@ void PaneRenderer::render(const RenderRequest& request, uint64_t id) {
   s.started = std::chrono::steady_clock::now();
   const Timer requestTimer;  // every phase counts in the pane's time
   // A switch of technique or view: never the old picture under the new name.
-  const std::string shows =
-      request.view == PaneView::Image ? request.technique : request.accelerator + " cost";
+  const std::string shows = viewShows(request.view, request.technique, request.accelerator);
   if (s.image && s.imageShows != shows) s.image.reset();
   if (s.phase != PaneSnapshot::Phase::Building) s.phase = PaneSnapshot::Phase::Rendering;
   publish(s);
@@ -206,7 +210,7 @@ void PaneRenderer::render(const RenderRequest& request, uint64_t id) {
     publishedAccel_ = accel_;
   }
   s.buildSeconds = buildSeconds_;
-  if (request.view != PaneView::Image) return renderCost(request, id, s, requestTimer);
+  if (isCostView(request.view)) return renderCost(request, id, s, requestTimer);
   const TechniqueInfo& techInfo = findTechnique(request.technique);
   // The cost of a pass is remembered per (scene, accelerator, technique, parameters, size).
   const std::string costKey =
@@ -220,7 +224,9 @@ void PaneRenderer::render(const RenderRequest& request, uint64_t id) {
   // Runs one job, publishing after each pass; false if cancelled.
   const auto runJob = [&](const RenderSettings& settings, bool preview) {
     const auto technique = techInfo.make();
-    RenderJob job(*request.scene, *accel_, *technique, request.techniqueParams, settings);
+    RenderSettings jobSettings = settings;
+    jobSettings.lightPaths = request.view == PaneView::LightPaths;
+    RenderJob job(*request.scene, *accel_, *technique, request.techniqueParams, jobSettings);
     {
       std::lock_guard lock(mutex_);
       if (pending_ || quit_) return false;
@@ -243,11 +249,18 @@ void PaneRenderer::render(const RenderRequest& request, uint64_t id) {
     setPhase(id, preview ? "preview" : "pass", preview ? -1.0 : 0.0);
     const Timer timer;
     job.run([&](int done, int total) {
-      s.image = std::make_shared<const Image>(job.frame().resolve());
-      s.imageShows = techInfo.name;
+      s.lightPathTiles.clear();
+      if (request.view == PaneView::LightPaths && job.frame().keepsLightPaths()) {
+        LightPathMosaic mosaic = lightPathMosaic(job.frame());
+        s.image = std::make_shared<const Image>(std::move(mosaic.image));
+        s.lightPathTiles = std::move(mosaic.tiles);
+      } else {
+        s.image = std::make_shared<const Image>(job.frame().resolve());
+      }
+      s.imageShows = shows;
       s.imageRequest = id;
       s.preview = preview;
-      s.view = PaneView::Image;
+      s.view = request.view;
       s.passes = preview ? 0 : done;
       s.totalPasses = preview ? 0 : total;
       s.seconds = requestTimer.seconds();

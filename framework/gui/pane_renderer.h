@@ -21,14 +21,19 @@
 #include "core/image.h"
 #include "core/params.h"
 #include "core/timer.h"
+#include "render/light_path_mosaic.h"
 #include "render/render_job.h"
 #include "render/render_stats.h"
 #include "scene/scene.h"
 
 namespace ll::gui {
 
-// What a pane shows: the technique's image, or the accelerator's cost per pixel.
-enum class PaneView { Image, NodesVisited, PrimitivesTested };
+// What a pane shows: the technique's image, the accelerator's cost per pixel, or the image split into its
+// light-path classes side by side (render/light_path_mosaic.h; techniques that split it: path).
+enum class PaneView { Image, NodesVisited, PrimitivesTested, LightPaths };
+inline bool isCostView(PaneView v) { return v == PaneView::NodesVisited || v == PaneView::PrimitivesTested; }
+// What a pane's image is made by in view v: the technique, "<technique> light paths" or "<accelerator> cost".
+std::string viewShows(PaneView v, const std::string& technique, const std::string& accelerator);
 
 struct RenderRequest {
   std::shared_ptr<const Scene> scene;
@@ -50,7 +55,8 @@ struct PaneSnapshot {
   uint64_t starts = 0;                 // renders the worker began: increases on every restart
   std::shared_ptr<const Image> image;  // linear radiance, stub pixels striped magenta
   bool preview = false;                // image is the quick low-resolution first look
-  PaneView view = PaneView::Image;     // what `image` holds: radiance, or per-pixel counts
+  PaneView view = PaneView::Image;     // what `image` holds: radiance, per-pixel counts, or the light-path mosaic
+  std::vector<MosaicTile> lightPathTiles;  // view LightPaths: where each class sits in `image` (empty: not split)
   std::string imageShows;               // what `image` was made by: the technique, or "<accelerator> cost"
   // `version` when the image was last cleared (a switch of technique or view):
   // display bytes of an older version belong to what the pane showed before.

@@ -15,6 +15,17 @@
 
 namespace ll::gui {
 
+namespace {
+
+// The light-path view's tiles: label and rectangle in the pane's image pixels.
+nlohmann::json lightPathTilesJson(const std::vector<MosaicTile>& tiles) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const MosaicTile& t : tiles) out.push_back({{"label", t.label}, {"x", t.x}, {"y", t.y}, {"w", t.w}, {"h", t.h}});
+  return out;
+}
+
+}  // namespace
+
 void saveFramebufferPng(const std::string& path, int width, int height) {
   saveFramebufferRegionPng(path, height, 0, 0, width, height);
 }
@@ -71,6 +82,7 @@ std::string saveScreenshotSidecar(const AppState& app, const std::string& path, 
             {"view", viewName(p.view)},
             {"legend_max", p.texture.legendMax()},
             {"structure_nodes", app.showStructure ? p.overlayNodes.size() : 0},
+            {"light_path_tiles", lightPathTilesJson(p.shown.lightPathTiles)},
             {"accel_params", p.accelParams.toJson()},
             {"phase_name", p.shown.phaseName},
             {"phase_fraction", p.shown.phaseFraction},

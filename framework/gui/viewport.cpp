@@ -153,7 +153,7 @@ std::vector<std::string> paneCaption(const AppState& app, int index, const std::
   const PaneState& p = app.panes[static_cast<size_t>(index)];
   const PaneSnapshot& s = p.shown;
   std::vector<std::string> lines;
-  if (s.view != PaneView::Image) {
+  if (isCostView(s.view)) {
     lines.push_back(std::string(1, paneLetter(index)) + "  " + p.accelerator + ": " +
                     (s.view == PaneView::NodesVisited ? "nodes visited" : "primitives tested") +
                     " per camera ray");
@@ -198,7 +198,9 @@ std::vector<std::string> paneCaption(const AppState& app, int index, const std::
                   p.error.relmse, p.error.rmse, p.error.ssim);
     lines.emplace_back(buf);
   }
-  if (app.scene && s.view == PaneView::Image) {
+  if (s.view == PaneView::LightPaths && s.lightPathTiles.empty() && s.image)
+    lines.emplace_back("light paths: " + p.technique + " does not split its picture by light path (path does)");
+  if (app.scene && !isCostView(s.view)) {
     const EffectSet missed = app.scene->effects.minus(findTechnique(p.technique).simulatesWith(p.techniqueParams));
     if (!missed.empty()) lines.push_back("misses: " + joinNames(missed.names()));
   }
@@ -312,6 +314,19 @@ void drawLegend(ImDrawList* dl, Rect r, float maxValue, bool automatic) {
   std::snprintf(buf, sizeof buf, "%.3g%s", static_cast<double>(maxValue),
                 automatic ? " (auto, 99th pct)" : "");
   dl->AddText(ImVec2(r.x + r.w - ImGui::CalcTextSize(buf).x, ty), IM_COL32_WHITE, buf);
+}
+
+// The light-path view's labels: each tile's class and share, at the tile's bottom-left corner (the caption
+// covers the top of the first tile).
+void drawLightPathLabels(AppState& app, ImDrawList* dl, const PaneState& p, Rect r) {
+  if (p.shown.view != PaneView::LightPaths || !p.shown.image) return;
+  const float sx = r.w / static_cast<float>(p.shown.image->width()), sy = r.h / static_cast<float>(p.shown.image->height());
+  for (const MosaicTile& t : p.shown.lightPathTiles) {
+    const float x = r.x + static_cast<float>(t.x) * sx, w = static_cast<float>(t.w) * sx;
+    const float bottom = r.y + static_cast<float>(t.y + t.h) * sy;
+    captionBox(app.overlayRects, dl, x + 2.0f, bottom - 2.0f, {t.label}, IM_COL32(0, 0, 0, 190), w - 4.0f,
+               Anchor::Bottom);
+  }
 }
 
 // The structure overlay of pane `i` over its image rectangle r.
@@ -452,7 +467,7 @@ void drawViewportContent(AppState& app, float x, float y, float w, float h);  //
 
 bool imageOnScreen(const PaneState& p) {
   // What the pane is set to show; until the worker takes a switch up, the old image is not it.
-  const std::string shows = p.view == PaneView::Image ? p.technique : p.accelerator + " cost";
+  const std::string shows = viewShows(p.view, p.technique, p.accelerator);
   return p.texture.valid() && p.shown.image && p.texture.version() > p.shown.clearedAt && p.shown.imageShows == shows;
 }
 
@@ -510,6 +525,7 @@ void drawViewportContent(AppState& app, float x, float y, float w, float h) {
         dl->AddImage(p.texture.imguiId(), ImVec2(r.x, r.y), ImVec2(r.x + r.w, r.y + r.h));
       else
         drawPlaceholder(app, dl, p, r);
+      if (current) drawLightPathLabels(app, dl, p, r);
       app.paneRects[static_cast<size_t>(i)] = {r.x, r.y, r.w, r.h};
       const float lh = current && p.texture.legendMax() > 0.0f
                            ? 34.0f * ImGui::GetIO().FontGlobalScale

@@ -45,6 +45,8 @@ EffectsReport measureSceneEffects(const Scene& scene, const Accelerator& accel, 
   r.spp = probe.spp();
   r.batches = probe.batches();
   r.probeSeconds = probe.seconds();
+  r.unseenPointLightCaustics =
+      !scene.lights.empty() && (scene.effects.has(Effect::MirrorReflection) || scene.effects.has(Effect::Refraction));
 
   for (int i = 0; i < kEffectCount; ++i) {
     EffectMeasurement m;
@@ -88,12 +90,14 @@ EffectsReport measureSceneEffects(const Scene& scene, const Accelerator& accel, 
     rs.seed = settings.seed;
     RenderJob job(scene, accel, *technique, params, rs);
     job.run();
+    v.prepareSeconds = job.stats().prepareSeconds;
     v.secondsPerPass = job.stats().renderSeconds;
-    if (&t == &path) {  // enough passes that its noise stays within the tolerance
-      const double passes = std::ceil(probe.noiseRelMsePerPass() / std::max(tolerance, 1e-12));
+    if (&t == &path) {  // enough passes that its noise stays within half the tolerance (half is left for bias)
+      const double passes = std::ceil(probe.noiseRelMsePerPass() / std::max(0.5 * tolerance, 1e-12));
       v.passes = static_cast<int>(std::clamp(passes, 1.0, 1e9));
     }
-    v.seconds = job.stats().prepareSeconds + v.secondsPerPass * v.passes;
+    const double pixelRatio = static_cast<double>(scene.camera.width) * scene.camera.height / (r.width * r.height);
+    v.seconds = v.prepareSeconds + v.secondsPerPass * pixelRatio * v.passes;
     v.withinTolerance = v.missedUnmeasured.empty() && v.missedError.high <= tolerance;
     r.techniques.push_back(v);
   }
@@ -123,8 +127,9 @@ nlohmann::json EffectsReport::toJson() const {
     for (int c = 0; c < kLightPathClassCount; ++c)
       if (v.missedClasses & lightPathBit(lightPathClassAt(c))) missed.emplace_back(lightPathClassName(lightPathClassAt(c)));
     techniquesJson.push_back({{"technique", v.technique},
-                              {"seconds", v.seconds},
-                              {"seconds_per_pass", v.secondsPerPass},
+                              {"seconds_at_camera_resolution", v.seconds},
+                              {"probe_prepare_seconds", v.prepareSeconds},
+                              {"probe_seconds_per_pass", v.secondsPerPass},
                               {"passes", v.passes},
                               {"misses_classes", missed},
                               {"relmse_of_what_it_misses", estimateJson(v.missedError)},
@@ -143,7 +148,8 @@ nlohmann::json EffectsReport::toJson() const {
             {"budget_seconds", budgetSeconds}}},
           {"effects", effectsJson},
           {"techniques", techniquesJson},
-          {"cheapest_within_tolerance", cheapest ? nlohmann::json(*cheapest) : nlohmann::json(nullptr)}};
+          {"cheapest_within_tolerance", cheapest ? nlohmann::json(*cheapest) : nlohmann::json(nullptr)},
+          {"unseen_point_light_caustics", unseenPointLightCaustics}};
 }
 
 }  // namespace ll

@@ -30,9 +30,11 @@ struct EffectMeasurement {
 
 struct TechniqueVerdict {
   std::string technique;  // with the parameter it needs, e.g. "path --set spectral=true"
-  double secondsPerPass = 0.0;  // at the probe's resolution, one pass, preparation (radiosity's solve) included
-  int passes = 1;         // passes to bring its noise within the tolerance (path); 1 for the others
-  double seconds = 0.0;   // secondsPerPass x passes (+ the preparation once)
+  double prepareSeconds = 0.0;  // measured: what it does once per picture (radiosity's solve)
+  double secondsPerPass = 0.0;  // measured: one pass at the probe's resolution
+  int passes = 1;               // passes that bring its noise within half the tolerance (path); 1 for the others
+  // The picture at the camera's resolution, estimated: preparation + one pass x the ratio of pixels x passes.
+  double seconds = 0.0;
   LightPathMask missedClasses = 0;  // light-path classes whose effect it does not simulate
   Estimate missedError;             // relMSE of the picture without them (probe)
   EffectSet missedUnmeasured;       // present effects it misses that are not light-path classes
@@ -48,6 +50,9 @@ struct EffectsReport {
   std::vector<EffectMeasurement> effects;  // every effect the framework names, in Effect order
   std::vector<TechniqueVerdict> techniques;
   std::optional<std::string> cheapest;  // a TechniqueVerdict::technique
+  // Point or directional lights and mirrors or glass: light from a light of zero size through a specular chain
+  // onto a surface (L S+ D) has probability zero for a path tracer, so those caustics are not in the probe.
+  bool unseenPointLightCaustics = false;
 
   nlohmann::json toJson() const;
 };

@@ -8,6 +8,7 @@
 #include "metrics/image_metrics.h"
 #include "modules/registry.h"
 #include "render/cost_image.h"
+#include "render/light_path_mosaic.h"
 #include "render/render_job.h"
 #include "scene/scene_loader.h"
 
@@ -39,17 +40,26 @@ Image renderPane(const Scene& scene, const PaneSetup& pane, const RenderSettings
   const AcceleratorInfo& a = findAccelerator(pane.accelerator);
   const ParamSet accelParams = paramsOf("accelerator '" + a.name + "'", a.params, pane.accelParams);
   const auto accel = buildAccelerator(a, accelParams, scene.geometry);
-  if (pane.view != "image") {
+  if (pane.view == "nodes" || pane.view == "primitives") {
     const CostMetric metric = pane.view == "nodes" ? CostMetric::NodesVisited : CostMetric::PrimitivesTested;
     onPass(1, 1);
     return costHeatmap(accelCostImage(*accel, renderCamera(scene, settings), metric), 0.0f, nullptr);
   }
   const ParamSet params = paramsOf("technique '" + t.name + "'", t.params, pane.techniqueParams);
   const auto technique = t.make();
-  RenderJob job(scene, *accel, *technique, params, settings);
+  RenderSettings jobSettings = settings;
+  jobSettings.lightPaths = pane.view == "light-paths";
+  RenderJob job(scene, *accel, *technique, params, jobSettings);
   job.run(onPass);
   for (const auto& [id, what] : job.stats().missingTasks) figure.missingTasks[id] = what;
   Image image = job.frame().resolve();
+  if (jobSettings.lightPaths && job.frame().keepsLightPaths()) {
+    LightPathMosaic mosaic = lightPathMosaic(job.frame());
+    image = std::move(mosaic.image);
+    std::string note = pane.technique + " split by light path, left to right and top to bottom:";
+    for (size_t k = 0; k < mosaic.tiles.size(); ++k) note += (k ? ", " : " ") + mosaic.tiles[k].label;
+    figure.notes.push_back(note);
+  }
   const float scale = std::exp2(exposure);
   for (Rgb& c : image.pixels()) c = c * scale;
   return image;

@@ -24,6 +24,7 @@ struct PresetFigure {
   int paneWidth = 0, paneHeight = 0;           // render size of each pane
   std::map<std::string, std::string> missingTasks;  // student task ID -> what, if a stub ran
   double seconds = 0.0;                        // wall time, scene load included
+  std::vector<std::string> notes;  // what the picture cannot say: each light-path tile's class and share
 };
 
 // The panes the preset's compare mode shows: side by side, 1, 2 or 4 panes

@@ -73,8 +73,8 @@ PaneSetup parsePane(const JsonNode& n) {
   p.spp = n.integer("spp", p.spp, 1, 1 << 16);
   if (n.has("view")) {
     p.view = n.string("view");
-    if (p.view != "image" && p.view != "nodes" && p.view != "primitives")
-      n.child("view").fail("unknown view '" + p.view + "' (allowed: image, nodes, primitives)");
+    if (p.view != "image" && p.view != "nodes" && p.view != "primitives" && p.view != "light-paths")
+      n.child("view").fail("unknown view '" + p.view + "' (allowed: image, nodes, primitives, light-paths)");
   }
   return p;
 }

@@ -25,7 +25,7 @@ struct PaneSetup {
       techniqueParams;  // name -> value as written; missing = default
   std::map<std::string, std::string> accelParams;
   int spp = 16;                // passes of progressive refinement (samples per pixel)
-  std::string view = "image";  // image | nodes | primitives (the accelerator's cost per pixel)
+  std::string view = "image";  // image | nodes | primitives (the accelerator's cost per pixel) | light-paths
 };
 
 enum class CompareMode { SideBySide, Wipe, Difference };

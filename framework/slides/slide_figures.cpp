@@ -55,6 +55,7 @@ std::vector<SlideFigure> renderDeckFigures(const Deck& deck, const FigureLimits&
       const double css = static_cast<double>(w) / std::max(figure.paneWidth, 1);  // CSS pixels per PNG pixel
       f.width = static_cast<int>(std::lround(figure.image.width() * css));
       f.height = static_cast<int>(std::lround(figure.image.height() * css));
+      for (const std::string& note : figure.notes) f.caption += (f.caption.empty() ? "" : " ") + note;
       f.png = pngBytes(figure.image);
       if (f.png.empty()) f.error = "PNG encoding failed";
       if (reports) (*reports)[i] = {figure.image.width(), figure.image.height(), figure.seconds, figure.missingTasks};

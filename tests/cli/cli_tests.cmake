@@ -219,3 +219,6 @@ assert p['converged'] and h[0]['shots']==32 and len(h)>3, p; \
 assert all(b['shots']>a['shots'] and b['unshot_fraction']<=a['unshot_fraction'] for a,b in zip(h,h[1:])), h; \
 assert h[-1]['unshot_fraction']<=1e-4 and len(s['patches'])>300; print('ok', len(h), 'steps')" ${OUT}/progressive.json)
 set_tests_properties(cli.radiosity.progressive_history_json PROPERTIES DEPENDS cli.radiosity.progressive_history)
+# The measured effects: info's probe and verdicts, render's effects=measured (tests/cli/effects_test.py).
+add_test(NAME cli.effects_measured
+         COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_LIST_DIR}/effects_test.py ${LL} ${SCENES} ${OUT})

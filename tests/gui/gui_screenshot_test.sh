@@ -29,6 +29,7 @@ shot cost
 shot gpu_twin
 shot cpu_gpu
 shot ray_tree
+shot light_paths
 
 "$CHECK" "$OUT/two_panes.png" pane 0 "$OUT/a.pfm"
 "$CHECK" "$OUT/two_panes.png" pane 1 "$OUT/b.pfm"
@@ -73,6 +74,20 @@ python3 -c "import json,sys; ps=json.load(open('$OUT/radiosity.json'))['panes'][
 sys.exit(0 if all(p['phase'] == 'done' and not p['error'] for p in ps) else 1)" \
   || { echo "FAIL: the radiosity panes did not finish"; exit 1; }
 echo "ok: radiosity bounces"
+# The light-path view: the CLI's mosaic (render --stats writes OUT.light-paths.pfm), a label per tile.
+"$LL" --quiet render data/scenes/cornell_box.json -t path -a bvh --width 160 --height 160 --spp 8 \
+  --stats "$OUT/paths.json" -o "$OUT/paths.pfm" >/dev/null
+"$CHECK" "$OUT/light_paths.png" pane 0 "$OUT/paths.light-paths.pfm"
+"$CHECK" "$OUT/light_paths.png" pane 1 "$OUT/paths.pfm"
+python3 - "$OUT/light_paths.json" <<'PY' || { echo "FAIL: light-path tiles"; exit 1; }
+import json, sys
+tiles = json.load(open(sys.argv[1]))['panes'][0]['light_path_tiles']
+names = [t['label'].split(' ')[0] for t in tiles]
+assert names == ['picture', 'emission', 'direct-lighting', 'diffuse-interreflection'], names
+shares = [float(t['label'].split(' ')[1]) for t in tiles[1:]]
+assert abs(sum(shares) - 100) < 0.5, shares
+PY
+echo "ok: the light-path view"
 # The checker itself must catch a wrong picture: pane 1 is not the 16-sample render.
 if "$CHECK" "$OUT/two_panes.png" pane 1 "$OUT/a.pfm" >/dev/null; then
   echo "FAIL: the checker accepted the wrong reference"; exit 1
