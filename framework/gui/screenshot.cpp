@@ -20,7 +20,9 @@ namespace {
 // The light-path view's tiles: label and rectangle in the pane's image pixels.
 nlohmann::json lightPathTilesJson(const std::vector<MosaicTile>& tiles) {
   nlohmann::json out = nlohmann::json::array();
-  for (const MosaicTile& t : tiles) out.push_back({{"label", t.label}, {"x", t.x}, {"y", t.y}, {"w", t.w}, {"h", t.h}});
+  for (const MosaicTile& t : tiles)
+    out.push_back({{"label", t.label()}, {"name", t.name}, {"share", t.share}, {"x", t.x}, {"y", t.y}, {"w", t.w},
+                   {"h", t.h}});
   return out;
 }
 

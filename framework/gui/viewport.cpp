@@ -158,8 +158,9 @@ std::vector<std::string> paneCaption(const AppState& app, int index, const std::
                     (s.view == PaneView::NodesVisited ? "nodes visited" : "primitives tested") +
                     " per camera ray");
   } else {
-    lines.push_back(std::string(1, paneLetter(index)) + "  " + p.technique + "  /  " +
-                    p.accelerator + (differs.empty() ? "" : "  |  " + differs));
+    lines.push_back(std::string(1, paneLetter(index)) + "  " + p.technique + "  /  " + p.accelerator +
+                    (s.view == PaneView::LightPaths ? "  |  split by light path" : "") +
+                    (differs.empty() ? "" : "  |  " + differs));
   }
   // The student tree: whose code this picture ran, for the tasks in focus.
   std::vector<std::string> yours, reference;
@@ -324,8 +325,9 @@ void drawLightPathLabels(AppState& app, ImDrawList* dl, const PaneState& p, Rect
   for (const MosaicTile& t : p.shown.lightPathTiles) {
     const float x = r.x + static_cast<float>(t.x) * sx, w = static_cast<float>(t.w) * sx;
     const float bottom = r.y + static_cast<float>(t.y + t.h) * sy;
-    captionBox(app.overlayRects, dl, x + 2.0f, bottom - 2.0f, {t.label}, IM_COL32(0, 0, 0, 190), w - 4.0f,
-               Anchor::Bottom);
+    std::vector<std::string> lines{t.name};
+    if (t.share >= 0.0) lines.push_back(t.shareText());
+    captionBox(app.overlayRects, dl, x + 2.0f, bottom - 2.0f, lines, IM_COL32(0, 0, 0, 190), w - 4.0f, Anchor::Bottom);
   }
 }
 
@@ -517,6 +519,15 @@ void drawViewportContent(AppState& app, float x, float y, float w, float h) {
       Rect cell = cellOf(i, app.paneCount, area);
       const float bannerW = cell.w - 12.0f;  // the banner spans the cell, under the picture
       cell.h = std::max(cell.h - bannerSpace(app, p, bannerW), 1.0f);
+      // The light-path view's tiles are small: its caption goes above the picture, not over it.
+      std::vector<std::string> captionAbove;
+      float aboveHeight = 0.0f;
+      if (p.view == PaneView::LightPaths && !app.projector) {
+        captionAbove = paneCaption(app, i, differsOf(i));
+        aboveHeight = captionHeight(captionAbove, bannerW);
+        cell.y += aboveHeight;
+        cell.h = std::max(cell.h - aboveHeight, 1.0f);
+      }
       const bool current = imageOnScreen(p);
       const RenderSettings size = app.scene ? renderSettings(app, p) : RenderSettings{};
       const Rect r = current ? fitImage(cell, p.texture.width(), p.texture.height(), 6.0f)
@@ -545,7 +556,10 @@ void drawViewportContent(AppState& app, float x, float y, float w, float h) {
         const float py = r.y + app.inspector.pixel.y / static_cast<float>(camera.height) * r.h;
         dl->AddCircle(ImVec2(px, py), 6.0f, IM_COL32(255, 0, 255, 255), 16, 2.0f);
       }
-      caption(i, r, r.w);
+      if (aboveHeight > 0.0f)
+        captionBox(app.overlayRects, dl, cell.x + 6.0f, r.y - aboveHeight, captionAbove, IM_COL32(0, 0, 0, 170), bannerW);
+      else
+        caption(i, r, r.w);
       paneBanners(dl, app, i, r, cell.x + 6.0f, bannerW);
     }
     return;

@@ -54,10 +54,10 @@ Image renderPane(const Scene& scene, const PaneSetup& pane, const RenderSettings
   for (const auto& [id, what] : job.stats().missingTasks) figure.missingTasks[id] = what;
   Image image = job.frame().resolve();
   if (jobSettings.lightPaths && job.frame().keepsLightPaths()) {
-    LightPathMosaic mosaic = lightPathMosaic(job.frame());
+    LightPathMosaic mosaic = fitMosaic(lightPathMosaic(job.frame()), settings.width, settings.height);
     image = std::move(mosaic.image);
     std::string note = pane.technique + " split by light path, left to right and top to bottom:";
-    for (size_t k = 0; k < mosaic.tiles.size(); ++k) note += (k ? ", " : " ") + mosaic.tiles[k].label;
+    for (size_t k = 0; k < mosaic.tiles.size(); ++k) note += (k ? ", " : " ") + mosaic.tiles[k].label();
     figure.notes.push_back(note);
   }
   const float scale = std::exp2(exposure);

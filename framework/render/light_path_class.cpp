@@ -4,6 +4,20 @@ namespace ll {
 
 const char* lightPathClassName(LightPathClass c) { return effectName(lightPathClassEffect(c)); }
 
+const char* lightPathClassShortName(LightPathClass c) {
+  switch (c) {
+    case LightPathClass::Emission: return "emission";
+    case LightPathClass::DirectLighting: return "direct";
+    case LightPathClass::MirrorReflection: return "mirror";
+    case LightPathClass::Refraction: return "refraction";
+    case LightPathClass::GlossyReflection: return "glossy";
+    case LightPathClass::DiffuseInterreflection: return "indirect";
+    case LightPathClass::Caustics: return "caustics";
+    case LightPathClass::SkyLight: return "sky";
+  }
+  return "?";
+}
+
 const char* lightPathClassPattern(LightPathClass c) {
   switch (c) {
     case LightPathClass::Emission: return "L E";

@@ -41,6 +41,7 @@ enum class LightPathClass : uint8_t {
 inline constexpr int kLightPathClassCount = 8;
 
 const char* lightPathClassName(LightPathClass c);     // the effect's name, e.g. "direct-lighting"
+const char* lightPathClassShortName(LightPathClass c);  // for labels in small tiles: "direct", "indirect", "sky"
 const char* lightPathClassPattern(LightPathClass c);  // Heckbert's notation, e.g. "L D E"
 Effect lightPathClassEffect(LightPathClass c);
 inline LightPathClass lightPathClassAt(int i) { return static_cast<LightPathClass>(i); }

@@ -82,10 +82,10 @@ echo "ok: radiosity bounces"
 python3 - "$OUT/light_paths.json" <<'PY' || { echo "FAIL: light-path tiles"; exit 1; }
 import json, sys
 tiles = json.load(open(sys.argv[1]))['panes'][0]['light_path_tiles']
-names = [t['label'].split(' ')[0] for t in tiles]
-assert names == ['picture', 'emission', 'direct-lighting', 'diffuse-interreflection'], names
-shares = [float(t['label'].split(' ')[1]) for t in tiles[1:]]
-assert abs(sum(shares) - 100) < 0.5, shares
+names = [t['name'] for t in tiles]
+assert names == ['picture', 'emission', 'direct', 'indirect'], names
+shares = [t['share'] for t in tiles[1:]]
+assert abs(sum(shares) - 1) < 1e-4, shares
 PY
 echo "ok: the light-path view"
 # The checker itself must catch a wrong picture: pane 1 is not the 16-sample render.
