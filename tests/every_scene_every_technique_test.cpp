@@ -2,29 +2,21 @@
 // pass) and with every accelerator: no sample is NaN or Inf, no pixel is
 // non-finite, and the accelerators agree on the picture. New modules join
 // by registering; nothing here names them.
-#include <filesystem>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "modules/registry.h"
+#include "render_support.h"
 #include "render/render_job.h"
 #include "scene/scene_loader.h"
 
 namespace ll {
 namespace {
 
-namespace fs = std::filesystem;
 
-std::vector<std::string> bundledScenes() {
-  std::vector<std::string> scenes;
-  for (const auto& e : fs::directory_iterator(std::string(LIGHTLAB_DATA_DIR) + "/scenes"))
-    if (e.path().extension() == ".json" && e.path().filename() != "scene.schema.json") scenes.push_back(e.path().string());
-  for (const auto& e : fs::directory_iterator(std::string(LIGHTLAB_DATA_DIR) + "/scenes/tests"))
-    if (e.path().extension() == ".json") scenes.push_back(e.path().string());
-  return scenes;
-}
+using testing_support::bundledScenes;
 
 Image render(const Scene& scene, const TechniqueInfo& t, const AcceleratorInfo& a, RenderStats* stats) {
   const auto accel = buildAccelerator(a, ParamSet(a.name, a.params), scene.geometry);

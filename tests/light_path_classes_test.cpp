@@ -5,13 +5,13 @@
 // render.
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "modules/registry.h"
+#include "render_support.h"
 #include "render/light_path_probe.h"
 #include "render/render_job.h"
 #include "scene/scene_loader.h"
@@ -19,7 +19,6 @@
 namespace ll {
 namespace {
 
-namespace fs = std::filesystem;
 
 // --- The state machine: each event sequence lands in the class Heckbert's notation gives it ----------------
 
@@ -107,14 +106,7 @@ SplitRender renderPath(const Scene& scene, const std::vector<std::pair<std::stri
   return r;
 }
 
-std::vector<std::string> bundledScenes() {
-  std::vector<std::string> scenes;
-  for (const auto& e : fs::directory_iterator(std::string(LIGHTLAB_DATA_DIR) + "/scenes"))
-    if (e.path().extension() == ".json" && e.path().filename() != "scene.schema.json") scenes.push_back(e.path().string());
-  for (const auto& e : fs::directory_iterator(std::string(LIGHTLAB_DATA_DIR) + "/scenes/tests"))
-    if (e.path().extension() == ".json") scenes.push_back(e.path().string());
-  return scenes;
-}
+using testing_support::bundledScenes;
 
 // Same seed, same streams: the split render's picture is the unsplit render's, and the classes sum to it (up to
 // float rounding of the order of the sums: 1e-5 of the pixel).

@@ -2,6 +2,7 @@
 // name, parameter assignments, settings. (tests/ is on the tests' include path.)
 #pragma once
 
+#include <filesystem>
 #include <string>
 #include <utility>
 #include <vector>
@@ -32,6 +33,17 @@ inline RenderResult renderWith(const Scene& scene, const std::string& technique,
   RenderJob job(scene, *accel, *t, params, settings);
   job.run();
   return {job.frame().resolve(false), job.stats(), job.frame().anyStub()};
+}
+
+// Every bundled scene: data/scenes/*.json (not the schema) and data/scenes/tests/*.json.
+inline std::vector<std::string> bundledScenes() {
+  namespace fs = std::filesystem;
+  std::vector<std::string> scenes;
+  for (const auto& e : fs::directory_iterator(std::string(LIGHTLAB_DATA_DIR) + "/scenes"))
+    if (e.path().extension() == ".json" && e.path().filename() != "scene.schema.json") scenes.push_back(e.path().string());
+  for (const auto& e : fs::directory_iterator(std::string(LIGHTLAB_DATA_DIR) + "/scenes/tests"))
+    if (e.path().extension() == ".json") scenes.push_back(e.path().string());
+  return scenes;
 }
 
 // Settings for a w x h render with `spp` samples and seed `seed`.
