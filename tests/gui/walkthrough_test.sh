@@ -39,9 +39,25 @@ starts=$(field s1 starts)
 open_combo s2b scene.files
 bunny=$(q s2b.json "([k for k in j['widgets'] if k == 'scene.file:$ROOT/data/scenes/bunny.json'] + [k for k in j['widgets'] if k.startswith('scene.file:') and k.endswith('/data/scenes/bunny.json')] + [''])[0]")
 [ -n "$bunny" ] || fail "the scene list has no data/scenes/bunny.json"
-click s2c "$bunny" 0.5 scene.files.list
-# Polled on its own: every screenshot adds a message, and only the last 50 are kept.
-until_shot s2o "any(m['text'] == 'opened ${bunny#scene.file:}' for m in j['messages'])"
+# Polled on its own: every screenshot adds a message, and only the last 50 are kept. A click on the file
+# that no frame took up (a loaded CI machine lost one) is made again, the list reopened if it closed:
+# three tries of 40 s, as a user would.
+opened="any(m['text'] == 'opened ${bunny#scene.file:}' for m in j['messages'])"
+for attempt in 1 2 3; do
+  if [ "$attempt" -gt 1 ]; then
+    shot s2r
+    [ "$(q s2r.json "'scene.files.list' in j['widgets']")" = True ] || open_combo s2b scene.files
+  fi
+  click s2c "$bunny" 0.5 scene.files.list
+  end=$((SECONDS + 40)) ok=0
+  while [ $SECONDS -lt $end ]; do
+    shot s2o
+    if [ "$(q s2o.json "$opened")" = True ]; then ok=1; break; fi
+    sleep 0.3
+  done
+  [ $ok = 1 ] && break
+  [ "$attempt" = 3 ] && fail "s2o: never true after three clicks on the bunny: $opened"
+done
 until_shot s2 "j['scene'].endswith('/data/scenes/bunny.json') and all(p['starts'] > s for p, s in zip(j['panes'], $starts)) and $done_both"
 echo "ok: the bunny was opened from the scene list and rendered in both panes"
 
