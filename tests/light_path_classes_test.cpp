@@ -92,11 +92,7 @@ SplitRender renderPath(const Scene& scene, const std::vector<std::pair<std::stri
   ParamSet params(t.name, t.params);
   for (const auto& [k, v] : sets) params.set(k, v);
   const auto technique = t.make();
-  RenderSettings rs;
-  rs.width = width;
-  rs.height = height;
-  rs.spp = spp;
-  rs.seed = seed;
+  RenderSettings rs = testing_support::renderSettings(width, height, spp, seed);
   rs.lightPaths = split;
   RenderJob job(scene, *accel, *technique, params, rs);
   job.run();

@@ -175,7 +175,7 @@ double relativeMse(const Image& a, const Image& b) {
     for (int c = 0; c < 3; ++c) {
       const double d = static_cast<double>(a.pixels()[i][c]) - static_cast<double>(b.pixels()[i][c]);
       const double vb = static_cast<double>(b.pixels()[i][c]);
-      rel += d * d / (vb * vb + 1e-2);
+      rel += d * d * relMseWeight(vb);
     }
   return rel / (3.0 * static_cast<double>(a.pixelCount()));
 }
@@ -190,7 +190,7 @@ ImageError compareImages(const Image& a, const Image& b) {
       const double va = static_cast<double>(pa[c]), vb = static_cast<double>(pb[c]);
       const double d = va - vb;
       sq += d * d;
-      rel += d * d / (vb * vb + 1e-2);
+      rel += d * d * relMseWeight(vb);
       const double dc = std::clamp(va, 0.0, 1.0) - std::clamp(vb, 0.0, 1.0);
       sqClamped += dc * dc;
       // Written so that a NaN difference propagates instead of being skipped.

@@ -51,6 +51,9 @@ struct ImageError {
 
 // Compares test image `a` with reference `b`. Throws UserError if the sizes
 // differ ("... (WxH vs WxH)") or the images are empty.
+// relMSE's weight of one channel's squared error against reference value b: 1 / (b^2 + 1e-2).
+inline double relMseWeight(double b) { return 1.0 / (b * b + 1e-2); }
+
 ImageError compareImages(const Image& a, const Image& b);
 
 // The metric names metricValue accepts, in a fixed order:

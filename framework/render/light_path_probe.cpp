@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "core/math.h"
+#include "metrics/image_metrics.h"
 #include "core/timer.h"
 #include "render/render_job.h"
 
@@ -22,8 +24,7 @@ namespace {
 
 double luminanceSum(const Image& image) {
   double sum = 0.0;
-  for (const Rgb& p : image.pixels())
-    sum += 0.2126 * static_cast<double>(p.r) + 0.7152 * static_cast<double>(p.g) + 0.0722 * static_cast<double>(p.b);
+  for (const Rgb& p : image.pixels()) sum += static_cast<double>(luminance(p));
   return sum;
 }
 
@@ -100,7 +101,7 @@ double LightPathProbe::noiseRelMsePerPass() const {
       const auto p = static_cast<double>(picture_.pixels()[i][ch]);
       double var = 0.0;
       for (const Image& s : sums) var += (static_cast<double>(s.pixels()[i][ch]) - p) * (static_cast<double>(s.pixels()[i][ch]) - p);
-      total += var / static_cast<double>(k - 1) / (p * p + 1e-2);
+      total += var / static_cast<double>(k - 1) * relMseWeight(p);
     }
   // A batch's variance is the per-sample variance over sppPerBatch samples.
   return total / static_cast<double>(3 * picture_.pixels().size()) * sppPerBatch_;
@@ -134,7 +135,7 @@ Estimate LightPathProbe::relMseWithout(LightPathMask classes) const {
   std::vector<double> s(n, 0.0), q(n, 0.0), weight(n);
   for (size_t i = 0; i < n; ++i) {
     const auto p = static_cast<double>(picture_.pixels()[i / 3][static_cast<int>(i % 3)]);
-    weight[i] = 1.0 / (p * p + 1e-2) / static_cast<double>(n);
+    weight[i] = relMseWeight(p) / static_cast<double>(n);
     for (size_t b = 0; b < k; ++b) {
       s[i] += c[b][i];
       q[i] += c[b][i] * c[b][i];

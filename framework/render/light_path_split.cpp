@@ -1,16 +1,16 @@
 #include "render/light_path_split.h"
 
+#include "core/math.h"
+#include "metrics/image_metrics.h"
+
 namespace ll {
 
 std::vector<LightPathShare> lightPathShares(const FrameBuffer& fb) {
   std::vector<LightPathShare> out;
   if (!fb.keepsLightPaths()) return out;
   const Image picture = fb.resolve(false);
-  const auto luminance = [](const Rgb& p) {
-    return 0.2126 * static_cast<double>(p.r) + 0.7152 * static_cast<double>(p.g) + 0.0722 * static_cast<double>(p.b);
-  };
   double total = 0.0;
-  for (const Rgb& p : picture.pixels()) total += luminance(p);
+  for (const Rgb& p : picture.pixels()) total += static_cast<double>(luminance(p));
   const bool halves = fb.passes() >= 2;
   for (int c = 0; c < kLightPathClassCount; ++c) {
     const LightPathClass cls = lightPathClassAt(c);
@@ -20,10 +20,10 @@ std::vector<LightPathShare> lightPathShares(const FrameBuffer& fb) {
     s.cls = cls;
     double lum = 0.0, rel = 0.0;
     for (size_t i = 0; i < all.pixels().size(); ++i) {
-      lum += luminance(all.pixels()[i]);
+      lum += static_cast<double>(luminance(all.pixels()[i]));
       for (int ch = 0; ch < 3; ++ch) {
         const auto p = static_cast<double>(picture.pixels()[i][ch]);
-        rel += static_cast<double>(even.pixels()[i][ch]) * static_cast<double>(odd.pixels()[i][ch]) / (p * p + 1e-2);
+        rel += static_cast<double>(even.pixels()[i][ch]) * static_cast<double>(odd.pixels()[i][ch]) * relMseWeight(p);
       }
     }
     s.luminanceShare = total > 0.0 ? lum / total : 0.0;
