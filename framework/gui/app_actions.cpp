@@ -327,6 +327,9 @@ RenderSettings renderSettings(const AppState& app, const PaneState& pane) {
 
 void submitPanes(AppState& app) {
   if (!app.scene) return;
+  // While another scene loads (a preset, a slide, the picker), its settings and camera are not
+  // rendered on the scene still shown: the panes stay dirty and start once it has arrived.
+  if (!app.loadingPath.empty() && app.loadingPath != app.scenePath) return;
   // Turning the plot on restarts the panes, so that their curves start at their first pass.
   const bool all = app.cameraChanged || (app.showPlot && !app.submittedPlot);
   app.cameraChanged = false;

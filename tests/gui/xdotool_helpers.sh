@@ -10,9 +10,11 @@
 #   click NAME WIDGET [FRACTION-ACROSS] [BOX]  reveal, then press the widget
 #   open_combo NAME WIDGET  click a combo until its list shows (three tries)
 #   click_until NAME WIDGET FRACTION COND  click the widget until COND holds (three clicks, 30 s each)
-#   $done_both              both panes finished all passes, and the pixels on screen are
-#                           their last image (display bytes are encoded in the background,
-#                           so the sidecar's phase can run ahead of the texture)
+#   $done_both              both panes finished all passes of their last submit, and the pixels
+#                           on screen are their last image (display bytes are encoded in the
+#                           background, so the sidecar's phase can run ahead of the texture; a
+#                           scene loads in the background too, so a pane can be 'done' with the
+#                           previous scene until the worker takes the new submit up)
 
 fail() { echo "FAIL: $*"; kill -0 "$gui" 2>/dev/null || { echo "the GUI died:"; cat gui.log; }; exit 1; }
 q() { python3 -c "import json,sys; j=json.load(open('$1')); print($2)"; }
@@ -39,7 +41,7 @@ until_shot() {
   done
 }
 key() { xdotool mousemove 5 5 key "$1"; }
-done_both="all(p['phase'] == 'done' and p['passes'] == p['total_passes'] and p['on_screen_version'] == p['image_version'] for p in j['panes'][:2])"
+done_both="all(p['request_current'] and p['phase'] == 'done' and p['passes'] == p['total_passes'] and p['on_screen_version'] == p['image_version'] for p in j['panes'][:2])"
 # reveal NAME WIDGET [BOX]: screenshots until WIDGET lies wholly inside BOX (a
 # recorded window: the side panel, or an open combo's list), turning the mouse
 # wheel over BOX to scroll it there, as a user would.
