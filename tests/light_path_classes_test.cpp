@@ -84,11 +84,13 @@ struct SplitRender {
   RenderStats stats;
 };
 
-SplitRender renderPath(const Scene& scene, const std::vector<std::pair<std::string, std::string>>& sets, int width,
-                       int height, int spp, uint64_t seed, bool split) {
+using Sets = std::vector<std::pair<std::string, std::string>>;
+
+SplitRender renderSplit(const std::string& techniqueName, const Scene& scene, const Sets& sets, int width, int height,
+                        int spp, uint64_t seed, bool split) {
   const AcceleratorInfo& a = findAccelerator("bvh");
   const auto accel = buildAccelerator(a, ParamSet(a.name, a.params), scene.geometry);
-  const TechniqueInfo& t = findTechnique("path");
+  const TechniqueInfo& t = findTechnique(techniqueName);
   ParamSet params(t.name, t.params);
   for (const auto& [k, v] : sets) params.set(k, v);
   const auto technique = t.make();
@@ -97,9 +99,14 @@ SplitRender renderPath(const Scene& scene, const std::vector<std::pair<std::stri
   RenderJob job(scene, *accel, *technique, params, rs);
   job.run();
   SplitRender r{job.frame().resolve(false), {}, job.stats()};
-  if (split)
+  if (split && job.frame().keepsLightPaths())
     for (int c = 0; c < kLightPathClassCount; ++c) r.classes.push_back(job.frame().resolveLightPath(lightPathClassAt(c)));
   return r;
+}
+
+SplitRender renderPath(const Scene& scene, const Sets& sets, int width, int height, int spp, uint64_t seed,
+                       bool split) {
+  return renderSplit("path", scene, sets, width, height, spp, seed, split);
 }
 
 using testing_support::bundledScenes;
@@ -240,6 +247,46 @@ TEST(LightPathClasses, EffectsMeasuredStayWithinTheTolerance) {
                 name, w.skipped.c_str(), truth, w.errorAdded, w.errorAddedHigh,
                 w.secondsPerPassFull > 0 ? 100.0 * (1.0 - w.secondsPerPassSkipping / w.secondsPerPassFull) : 0.0);
   }
+}
+
+// Radiosity splits its picture by bounce: E is path's emission, K E its direct lighting, K^2 E + ... its
+// diffuse interreflection. The parts add up to the picture, each is the picture of show=bounce (bounce 0, 1)
+// or what those leave, and the shares agree with path's on the Cornell box (radiosity's patches and path's
+// noise: within 2.5 percentage points; measured 55.0/22.0/23.0 % against 53.1/23.0/23.9 % at 160 px).
+TEST(LightPathClasses, RadiositySplitsByBounceAsPathDoes) {
+  const Scene scene = loadScene(std::string(LIGHTLAB_DATA_DIR) + "/scenes/cornell_box.json");
+  const Sets rad = {{"hemicube_res", "24"}};
+  const SplitRender split = renderSplit("radiosity", scene, rad, 48, 48, 2, 1, true);
+  ASSERT_EQ(split.classes.size(), static_cast<size_t>(kLightPathClassCount));
+  const auto cls = [&](LightPathClass c) -> const Image& { return split.classes[static_cast<size_t>(c)]; };
+  const auto bounceImage = [&](int k) {
+    Sets sets = rad;
+    sets.push_back({"show", "bounce"});
+    sets.push_back({"bounce", std::to_string(k)});
+    return renderSplit("radiosity", scene, sets, 48, 48, 2, 1, false).picture;
+  };
+  const Image e = bounceImage(0), ke = bounceImage(1);
+  for (size_t i = 0; i < split.picture.pixels().size(); ++i)
+    for (int ch = 0; ch < 3; ++ch) {
+      const float p = split.picture.pixels()[i][ch];
+      float sum = 0.0f;
+      for (const Image& c : split.classes) sum += c.pixels()[i][ch];
+      ASSERT_NEAR(sum, p, 1e-5f * (1.0f + p)) << "pixel " << i;
+      ASSERT_NEAR(cls(LightPathClass::Emission).pixels()[i][ch], e.pixels()[i][ch], 1e-6f * (1.0f + p));
+      ASSERT_NEAR(cls(LightPathClass::DirectLighting).pixels()[i][ch], ke.pixels()[i][ch], 1e-5f * (1.0f + p));
+      for (LightPathClass none : {LightPathClass::MirrorReflection, LightPathClass::Refraction,
+                                  LightPathClass::GlossyReflection, LightPathClass::Caustics, LightPathClass::SkyLight})
+        ASSERT_EQ(cls(none).pixels()[i][ch], 0.0f);
+    }
+  const SplitRender path = renderPath(scene, {}, 48, 48, 64, 1, true);
+  ASSERT_EQ(split.stats.lightPaths.size(), path.stats.lightPaths.size());
+  for (size_t c = 0; c < path.stats.lightPaths.size(); ++c)
+    EXPECT_NEAR(split.stats.lightPaths[c].luminanceShare, path.stats.lightPaths[c].luminanceShare, 0.025)
+        << lightPathClassName(lightPathClassAt(static_cast<int>(c)));
+  // Where radiosity has no F to take powers of (progressive refinement), it does not split.
+  const SplitRender progressive = renderSplit("radiosity", scene, {{"progressive", "true"}}, 16, 16, 1, 1, true);
+  EXPECT_TRUE(progressive.classes.empty());
+  EXPECT_TRUE(progressive.stats.lightPaths.empty());
 }
 
 // The probe's relMSE of the picture without a class, from 16 batches of 4 spp, against the same quantity from

@@ -11,6 +11,7 @@
 //   lightlab radiosity SCENE --json OUT.json     # every patch and the solver's history
 //   lightlab render SCENE -t radiosity-raster     # the same solution through A1's rasterizer
 #include <algorithm>
+#include <array>
 #include <memory>
 #include <optional>
 
@@ -18,6 +19,7 @@
 
 #include "radiosity_scene.h"
 #include "rasterizer.h"
+#include "render/light_path_class.h"
 #include "render/raster_scene.h"
 #include "render/technique.h"
 #include "scene/camera.h"
@@ -48,6 +50,7 @@ class Radiosity final : public PixelTechnique {
     frame_.emplace(camera_);
     gouraud_ = ctx.params.getChoice("interpolate") == "gouraud";
     settings_ = a5::radiositySettings(ctx.params);
+    classCorners_.clear();
     if (settings_.progressive) {
       progressive_ = a5::progressiveScene(ctx.scene, settings_);
       patches_ = progressive_.patches;
@@ -59,7 +62,13 @@ class Radiosity final : public PixelTechnique {
     shown_ = solved_->shown;
     corners_ = solved_->vertexShown;
     solved_->replayTasks();
+    if (ctx.settings.lightPaths) splitByBounce();
   }
+
+  // The picture split by bounce, as light-path classes: E is what path calls emission (L E), K E its
+  // direct lighting (L D E), K^2 E + K^3 E + ... its diffuse interreflection (L D D+ E). Needs F (not
+  // hierarchical, not progressive).
+  bool splitsLightPaths() const override { return !classCorners_.empty(); }
 
  protected:
   const Accelerator& accelerator(const RenderContext&) const override { return *patches_->accel; }
@@ -96,6 +105,15 @@ class Radiosity final : public PixelTechnique {
       const glm::uvec3& t = mesh.geometry.triangles[hit.prim];
       b = (1.0f - hit.b1 - hit.b2) * corners_[t.x] + hit.b1 * corners_[t.y] + hit.b2 * corners_[t.z];
     }
+    if (s.lightPaths && !classCorners_.empty()) {
+      const glm::uvec3& t = mesh.geometry.triangles[hit.prim];
+      for (size_t k = 0; k < kSplit.size(); ++k) {
+        const std::vector<Rgb>& c = classCorners_[k];
+        const Rgb part = gouraud_ ? (1.0f - hit.b1 - hit.b2) * c[t.x] + hit.b1 * c[t.y] + hit.b2 * c[t.z]
+                                  : classPatches_[k][patch];
+        s.lightPaths[static_cast<size_t>(kSplit[k])] = part / kPi;
+      }
+    }
     return b / kPi;  // a diffuse surface's radiance
   }
 
@@ -108,6 +126,33 @@ class Radiosity final : public PixelTechnique {
   a5::ProgressiveScene progressive_;                   // or progressive refinement
   std::shared_ptr<const a5::PatchScene> patches_;
   std::vector<Rgb> shown_, corners_;  // per patch and per mesh vertex: the radiosity shown
+
+  // The classes bounce 0, 1 and 2+ fall in; per class, the shown radiosity's part per patch and per vertex.
+  static constexpr std::array<LightPathClass, 3> kSplit{LightPathClass::Emission, LightPathClass::DirectLighting,
+                                                        LightPathClass::DiffuseInterreflection};
+  std::array<std::vector<Rgb>, 3> classPatches_;
+  std::vector<std::vector<Rgb>> classCorners_;
+
+  void splitByBounce() {
+    if (solved_->f().size() == 0) return;
+    const a5::RadiositySystem system = solved_->system();
+    // Which terms of E + KE + K^2E + ... the display shows (show=bounce: term k alone; bounces: 0..k).
+    const bool single = settings_.show == a5::RadiositySettings::Show::Bounce;
+    const int last = settings_.show == a5::RadiositySettings::Show::Solution ? 1 << 30 : settings_.bounce;
+    const int first = single ? settings_.bounce : 0;
+    for (size_t k = 0; k < 3; ++k) classPatches_[k].assign(shown_.size(), Rgb(0.0f));
+    std::vector<Rgb> rest = shown_;  // what bounces 0 and 1 leave: bounces 2+ (and the ambient term)
+    for (int k = 0; k <= 1; ++k) {
+      if (k < first || k > last) continue;
+      const std::vector<Rgb> term = a5::bounce(system, k);
+      for (size_t i = 0; i < rest.size(); ++i) {
+        classPatches_[static_cast<size_t>(k)][i] = isFinite(term[i]) ? term[i] : Rgb(0.0f);
+        rest[i] -= classPatches_[static_cast<size_t>(k)][i];
+      }
+    }
+    if (last >= 2) classPatches_[2] = rest;
+    for (const std::vector<Rgb>& c : classPatches_) classCorners_.push_back(cornerValues(patches_->mesh, c));
+  }
 };
 
 // The parameters of the solve, shared by both displays.

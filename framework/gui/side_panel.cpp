@@ -233,7 +233,7 @@ void paneSection(AppState& app, int i) {
     if (paramWidgets(p.accelParams)) p.dirty = true;
     ImGui::TreePop();
   }
-  const char* views[] = {"image", "cost: nodes visited", "cost: primitives tested", "light paths (path)"};
+  const char* views[] = {"image", "cost: nodes visited", "cost: primitives tested", "light paths (path, radiosity)"};
   int view = static_cast<int>(p.view);
   if (ImGui::Combo("view", &view, views, 4)) {
     p.view = static_cast<PaneView>(view);

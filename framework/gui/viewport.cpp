@@ -200,7 +200,7 @@ std::vector<std::string> paneCaption(const AppState& app, int index, const std::
     lines.emplace_back(buf);
   }
   if (s.view == PaneView::LightPaths && s.lightPathTiles.empty() && s.image)
-    lines.emplace_back("light paths: " + p.technique + " does not split its picture by light path (path does)");
+    lines.emplace_back("light paths: " + p.technique + " does not split its picture by light path (path does; radiosity with a form-factor matrix, by bounce)");
   if (app.scene && !isCostView(s.view)) {
     const EffectSet missed = app.scene->effects.minus(findTechnique(p.technique).simulatesWith(p.techniqueParams));
     if (!missed.empty()) lines.push_back("misses: " + joinNames(missed.names()));

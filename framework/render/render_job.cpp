@@ -8,9 +8,7 @@ namespace ll {
 RenderJob::RenderJob(const Scene& scene, const Accelerator& accel, Technique& technique, const ParamSet& params,
                      RenderSettings settings)
     : scene_(scene), accel_(accel), technique_(technique), params_(params), settings_(settings),
-      frame_(settings.width, settings.height) {
-  if (settings.lightPaths && technique.splitsLightPaths()) frame_.enableLightPaths();
-}
+      frame_(settings.width, settings.height) {}
 
 void RenderJob::run(const std::function<void(int, int)>& onPass) {
   RenderContext ctx{scene_, accel_, params_, settings_, &taskLog_};
@@ -24,6 +22,8 @@ void RenderJob::run(const std::function<void(int, int)>& onPass) {
     technique_.prepare(ctx);
     stats_.prepareSeconds = prepare.seconds();
   }
+  // (After prepare(): whether a technique can split may depend on its parameters, e.g. radiosity's solver.)
+  if (settings_.lightPaths && technique_.splitsLightPaths()) frame_.enableLightPaths();
   const int total = technique_.passCount(ctx);
   const Timer timer;
   for (int pass = 0; pass < total && !cancel_; ++pass) {

@@ -65,7 +65,8 @@ class Technique {
     (void)position;
     return std::nullopt;
   }
-  // Whether renderPass() fills the frame buffer's light-path classes (FrameBuffer::enableLightPaths).
+  // Whether renderPass() fills the frame buffer's light-path classes (FrameBuffer::enableLightPaths);
+  // asked after prepare().
   virtual bool splitsLightPaths() const { return false; }
   // What the last prepare() decided to leave out (--set effects=measured), if anything.
   virtual std::optional<SkippedWork> skippedWork() const { return std::nullopt; }

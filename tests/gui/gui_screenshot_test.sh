@@ -78,16 +78,23 @@ echo "ok: radiosity bounces"
 "$LL" --quiet render data/scenes/cornell_box.json -t path -a bvh --width 160 --height 160 --spp 8 \
   --stats "$OUT/paths.json" -o "$OUT/paths.pfm" >/dev/null
 "$CHECK" "$OUT/light_paths.png" pane 0 "$OUT/paths.light-paths.pfm"
-"$CHECK" "$OUT/light_paths.png" pane 1 "$OUT/paths.pfm"
+"$LL" --quiet render data/scenes/cornell_box.json -t radiosity --width 160 --height 160 --spp 4 \
+  --set hemicube_res=16 --stats "$OUT/bounces.json" -o "$OUT/bounces.pfm" >/dev/null
+"$CHECK" "$OUT/light_paths.png" pane 1 "$OUT/bounces.light-paths.pfm"
 python3 - "$OUT/light_paths.json" <<'PY' || { echo "FAIL: light-path tiles"; exit 1; }
 import json, sys
-tiles = json.load(open(sys.argv[1]))['panes'][0]['light_path_tiles']
-names = [t['name'] for t in tiles]
-assert names == ['picture', 'emission', 'direct', 'indirect'], names
-shares = [t['share'] for t in tiles[1:]]
-assert abs(sum(shares) - 1) < 1e-4, shares
+panes = json.load(open(sys.argv[1]))['panes']
+for pane in panes[:2]:  # path's classes, then radiosity's bounces E, KE, K^2E+...
+    tiles = pane['light_path_tiles']
+    names = [t['name'] for t in tiles]
+    assert names == ['picture', 'emission', 'direct', 'indirect'], (pane['technique'], names)
+    shares = [t['share'] for t in tiles[1:]]
+    assert abs(sum(shares) - 1) < 1e-4, shares
+# The two decompositions agree within a few points.
+a, b = ([t['share'] for t in p['light_path_tiles'][1:]] for p in panes[:2])
+assert all(abs(x - y) < 0.04 for x, y in zip(a, b)), (a, b)
 PY
-echo "ok: the light-path view"
+echo "ok: the light-path view (path and radiosity)"
 # The checker itself must catch a wrong picture: pane 1 is not the 16-sample render.
 if "$CHECK" "$OUT/two_panes.png" pane 1 "$OUT/a.pfm" >/dev/null; then
   echo "FAIL: the checker accepted the wrong reference"; exit 1
