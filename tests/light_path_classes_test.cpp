@@ -5,11 +5,15 @@
 // render.
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
+#include "metrics/image_metrics.h"
 #include "modules/registry.h"
 #include "render_support.h"
 #include "render/light_path_probe.h"
@@ -287,6 +291,51 @@ TEST(LightPathClasses, RadiositySplitsByBounceAsPathDoes) {
   const SplitRender progressive = renderSplit("radiosity", scene, {{"progressive", "true"}}, 16, 16, 1, 1, true);
   EXPECT_TRUE(progressive.classes.empty());
   EXPECT_TRUE(progressive.stats.lightPaths.empty());
+}
+
+// Whitted with effects=measured measures its own picture with and without refraction and mirror-reflection
+// rays. On its scene both show: nothing is left out and the picture is the full one. Allowed everything, it
+// leaves both out and its picture is ray casting's with shadows (max_depth=0), exactly. With the glass
+// shrunk to a bead (2 cm of 60) the refraction rays' light no longer shows: they are left out, and the
+// full-size picture differs from the full render by less than the tolerance.
+TEST(LightPathClasses, WhittedLeavesOutRaysWhoseLightDoesNotShow) {
+  const std::string path = std::string(LIGHTLAB_DATA_DIR) + "/scenes/whitted_1980.json";
+  const Scene scene = loadScene(path);
+  const SplitRender full = renderSplit("whitted", scene, {}, 64, 48, 2, 3, false);
+  const SplitRender measured = renderSplit("whitted", scene, {{"effects", "measured"}}, 64, 48, 2, 3, false);
+  ASSERT_TRUE(measured.stats.skipped.has_value());
+  EXPECT_EQ(measured.stats.skipped->leftOut, 0u) << measured.stats.skipped->skipped;
+  EXPECT_EQ(compareImages(measured.picture, full.picture).maxAbs, 0.0);
+  const SplitRender all = renderSplit("whitted", scene, {{"effects", "measured"}, {"effects_tolerance", "1"}}, 64,
+                                      48, 2, 3, false);
+  ASSERT_TRUE(all.stats.skipped.has_value());
+  EXPECT_EQ(all.stats.skipped->leftOut,
+            lightPathBit(LightPathClass::Refraction) | lightPathBit(LightPathClass::MirrorReflection));
+  EXPECT_GT(all.stats.skipped->errorAdded, 1e-3);
+  EXPECT_EQ(all.stats.work.rays[static_cast<size_t>(RayKind::Refraction)], 0u);
+  EXPECT_EQ(all.stats.work.rays[static_cast<size_t>(RayKind::Reflection)], 0u);
+  const SplitRender depth0 = renderSplit("whitted", scene, {{"max_depth", "0"}}, 64, 48, 2, 3, false);
+  EXPECT_EQ(compareImages(all.picture, depth0.picture).maxAbs, 0.0);
+
+  nlohmann::json j = nlohmann::json::parse(std::ifstream(path));
+  for (auto& o : j["objects"])
+    if (o.contains("radius") && o["material"] != "mirror") o["radius"] = o["radius"].get<double>() / 30.0;
+  const std::string bead = ::testing::TempDir() + "whitted_bead.json";
+  std::ofstream(bead) << j.dump();
+  const Scene small = loadScene(bead);
+  const SplitRender beadFull = renderSplit("whitted", small, {}, 160, 120, 1, 3, false);
+  const SplitRender beadMeasured = renderSplit("whitted", small, {{"effects", "measured"}}, 160, 120, 1, 3, false);
+  ASSERT_TRUE(beadMeasured.stats.skipped.has_value());
+  const SkippedWork& w = *beadMeasured.stats.skipped;
+  EXPECT_EQ(w.leftOut, lightPathBit(LightPathClass::Refraction)) << w.skipped;
+  EXPECT_LE(w.errorAdded, kDefaultEffectsTolerance);
+  EXPECT_GT(beadFull.stats.work.rays[static_cast<size_t>(RayKind::Refraction)], 0u);
+  EXPECT_EQ(beadMeasured.stats.work.rays[static_cast<size_t>(RayKind::Refraction)], 0u);
+  const double real = compareImages(beadMeasured.picture, beadFull.picture).relmse;
+  EXPECT_GT(real, 0.0);
+  EXPECT_LE(real, kDefaultEffectsTolerance);
+  std::printf("[ effects ] whitted, glass bead: left out %s, relMSE %.2g at 160x120 (measured %.2g on the probe)\n",
+              w.skipped.c_str(), real, w.errorAdded);
 }
 
 // The probe's relMSE of the picture without a class, from 16 batches of 4 spp, against the same quantity from

@@ -7,15 +7,25 @@
 //
 //   lightlab render SCENE -t whitted [--set max_depth=5] [--set min_throughput=0.001]
 //     [--set fresnel=exact|schlick] [--set shadows=filtered|opaque] [--set light_samples=16]
+//     [--set effects=measured [--set effects_tolerance=0.001]]
 //   lightlab trace SCENE --pixel X Y -t whitted --json   # the ray tree of one pixel
 //
 // Rays are spawned only where the scene calls for them: a reflection ray
 // only off a mirror or a dielectric, a refraction ray only into a
-// dielectric, shadow rays only when something can cast a shadow.
+// dielectric, shadow rays only when something can cast a shadow; with
+// effects=measured, not even those whose light does not show (measured).
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <optional>
+#include <string>
+#include <utility>
+#include <vector>
 
+#include "core/timer.h"
+#include "metrics/image_metrics.h"
+#include "render/light_path_probe.h"
+#include "render/render_job.h"
 #include "render/technique.h"
 #include "scene/camera.h"
 #include "whitted_tracer.h"
@@ -26,6 +36,10 @@ namespace {
 
 class Whitted final : public PixelTechnique {
  public:
+  Whitted() = default;
+  // A Whitted tracer that leaves these classes out whatever its parameters say (effects=measured's trials).
+  explicit Whitted(LightPathMask leftOut) : trial_(true), fixedLeftOut_(leftOut) {}
+
   void prepare(const RenderContext& ctx) override {
     camera_ = renderCamera(ctx.scene, ctx.settings);
     frame_.emplace(camera_);
@@ -35,7 +49,14 @@ class Whitted final : public PixelTechnique {
     settings_.schlick = p.getChoice("fresnel") == "schlick";
     settings_.filteredShadows = p.getChoice("shadows") == "filtered";
     settings_.lightSamples = p.getInt("light_samples");
+    skipped_.reset();
+    LightPathMask leftOut = fixedLeftOut_;
+    if (!trial_ && p.getChoice("effects") == "measured") leftOut = measureEffects(ctx);
+    settings_.skipRefraction = leftOut & lightPathBit(LightPathClass::Refraction);
+    settings_.skipMirrorReflection = leftOut & lightPathBit(LightPathClass::MirrorReflection);
   }
+
+  std::optional<SkippedWork> skippedWork() const override { return skipped_; }
 
   std::optional<RayTree> rayTree(const RenderContext& ctx, Vec2 position) const override {
     WorkCounters counters;
@@ -57,6 +78,64 @@ class Whitted final : public PixelTechnique {
   }
 
  private:
+  // --set effects=measured. Whitted's picture is cheap, so it measures itself rather than asking the path
+  // tracer's probe: small renders (the probe's 128 px width, 4 passes, the render's own seed) with and
+  // without each class it could leave out -- refraction rays, then reflection rays -- and the classes whose
+  // absence changes that picture by at most effects_tolerance (relMSE), fewest-first, are left out.
+  LightPathMask measureEffects(const RenderContext& ctx) {
+    const Timer timer;
+    RenderSettings rs = ctx.settings;
+    rs.width = std::min(camera_.width, LightPathProbeSettings{}.width);
+    rs.height = std::max(1, rs.width * camera_.height / camera_.width);
+    rs.spp = 4;
+    rs.lightPaths = false;
+    const auto render = [&](LightPathMask leftOut) {
+      Whitted trial(leftOut);
+      RenderJob job(ctx.scene, ctx.accel, trial, ctx.params, rs);
+      job.run();
+      return std::make_pair(job.frame().resolve(false), job.stats().renderSeconds / rs.spp);
+    };
+    const auto [full, fullSeconds] = render(0);
+    // Only the classes whose rays the scene spawns at all are candidates.
+    std::vector<std::pair<double, LightPathClass>> candidates;
+    for (const auto& [cls, effect] : {std::pair{LightPathClass::Refraction, Effect::Refraction},
+                                      std::pair{LightPathClass::MirrorReflection, Effect::MirrorReflection}})
+      if (ctx.scene.effects.has(effect))
+        candidates.emplace_back(compareImages(render(lightPathBit(cls)).first, full).relmse, cls);
+    std::sort(candidates.begin(), candidates.end());
+    const double tolerance = ctx.params.getFloat("effects_tolerance");
+    LightPathMask leftOut = 0;
+    double error = 0.0, seconds = fullSeconds;
+    for (const auto& [alone, cls] : candidates) {
+      if (alone > tolerance) break;
+      const auto [without, perPass] = render(leftOut | lightPathBit(cls));
+      const double together = compareImages(without, full).relmse;
+      if (together > tolerance) break;
+      leftOut |= lightPathBit(cls);
+      error = together;
+      seconds = perPass;
+    }
+    SkippedWork w;
+    w.tolerance = tolerance;
+    w.leftOut = leftOut;
+    w.errorAdded = error;
+    w.errorAddedHigh = error;  // measured on the same streams: no sampling interval
+    std::string names;
+    for (const auto& [alone, cls] : candidates)
+      if (leftOut & lightPathBit(cls)) names += std::string(names.empty() ? "" : ", ") + lightPathClassName(cls);
+    w.skipped = names.empty() ? "nothing: every class whose rays the scene spawns shows" : names + " (their rays not traced)";
+    if (leftOut) {
+      w.secondsPerPassFull = fullSeconds;
+      w.secondsPerPassSkipping = seconds;
+    }
+    w.probeSeconds = timer.seconds();
+    skipped_ = w;
+    return leftOut;
+  }
+
+  bool trial_ = false;  // one of measureEffects()'s renders: leaves out fixedLeftOut_, measures nothing
+  LightPathMask fixedLeftOut_ = 0;
+  std::optional<SkippedWork> skipped_;
   Camera camera_;
   std::optional<CameraFrame> frame_;
   a3::WhittedSettings settings_;
@@ -83,6 +162,12 @@ TechniqueInfo whittedTechnique() {
                             "inside (Beer-Lambert); opaque: "
                             "every surface blocks light"),
           ParamDecl::integer("light_samples", 16, 1, 1024, "shadow-ray samples per area light per pixel sample"),
+          ParamDecl::choice("effects", "all", {"all", "measured"},
+                            "all: trace every ray the scene calls for; measured: leave out refraction or "
+                            "mirror-reflection rays whose light changes the picture by less than effects_tolerance "
+                            "(measured on a small render with and without them)"),
+          ParamDecl::real("effects_tolerance", kDefaultEffectsTolerance, 0.0, 1.0,
+                          "effects=measured: the relMSE a left-out class may add"),
       },
       []() -> std::unique_ptr<Technique> { return std::make_unique<Whitted>(); },
   };

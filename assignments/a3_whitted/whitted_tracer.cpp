@@ -188,7 +188,11 @@ int WhittedTracer::addNode(RayKind kind, const Ray& ray, const PathState& parent
 }
 
 Rgb WhittedTracer::trace(const Ray& ray, RayKind kind, const Surface& from, Rgb weight) const {
+  if ((kind == RayKind::Refraction && settings_.skipRefraction) ||
+      (kind == RayKind::Reflection && !from.path.refracted && settings_.skipMirrorReflection))
+    return Rgb(0.0f);
   PathState child;
+  child.refracted = from.path.refracted || kind == RayKind::Refraction;
   child.depth = from.path.depth + 1;
   child.throughput = from.path.throughput * weight;
   child.media = kind == RayKind::Refraction ? from.mediaBehind : from.path.media;

@@ -25,6 +25,7 @@ struct PathState {
   Media media;            // where the ray travels
   RayKind kind = RayKind::Camera;
   int node = -1;          // its node in the ray tree being recorded, or -1
+  bool refracted = false;  // a refraction ray is among its ancestors (or it is one)
 };
 
 // A hit as the recursion sees it.
@@ -51,6 +52,10 @@ struct WhittedSettings {
   bool schlick = false;          // Schlick's approximation instead of the exact Fresnel equations
   int lightSamples = 16;         // shadow rays per area light
   bool filteredShadows = true;   // shadow rays pass through transmissive surfaces, tinted and absorbed
+  // --set effects=measured: light-path classes left out, their rays not traced (trace() returns black):
+  // refraction rays (the refraction class), and reflection rays not below a refraction (mirror-reflection).
+  bool skipRefraction = false;
+  bool skipMirrorReflection = false;
 };
 
 // Schlick's approximation of the unpolarised Fresnel reflectance (framework
@@ -80,7 +85,8 @@ class WhittedTracer {
   float fresnel(const Surface& s) const;
   // weight x the radiance arriving along the child ray `ray` of `from`
   // (radiance() one level deeper). A Refraction ray travels in
-  // from.mediaBehind, any other in from.path.media.
+  // from.mediaBehind, any other in from.path.media. Black, and no ray
+  // traced, for a ray of a class the settings skip.
   Rgb trace(const Ray& ray, RayKind kind, const Surface& from, Rgb weight) const;
 
   // The camera ray's radiance: the root of the recursion.
