@@ -27,9 +27,16 @@ class ProgressiveRadiosity {
   // is still unshot (rho times it), and the fraction of the emitted power unshot.
   std::vector<Rgb> displayed(double* unshotFraction = nullptr) const;
   size_t shots() const;
+  // How much what is still unshot shows: the relMSE (image_metrics.h, on radiance B / pi) of the display
+  // without its ambient term against the display, averaged over the patches by area (a picture's pixels
+  // weight the patches by how much of the frame they fill, which this does not know).
+  double unshotRelMse() const;
+  // Hemicube rows computed so far (patches that shot at least once), of mesh.patches.size().
+  size_t rowsComputed() const;
 
  private:
   double unshotFractionLocked() const;
+  Rgb ambientLocked() const;
 
   const PatchMesh& mesh_;
   mutable std::mutex mutex_;

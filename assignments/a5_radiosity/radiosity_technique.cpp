@@ -12,6 +12,7 @@
 //   lightlab render SCENE -t radiosity-raster     # the same solution through A1's rasterizer
 #include <algorithm>
 #include <array>
+#include <cstdio>
 #include <memory>
 #include <optional>
 
@@ -20,6 +21,7 @@
 #include "radiosity_scene.h"
 #include "rasterizer.h"
 #include "render/light_path_class.h"
+#include "render/light_path_probe.h"
 #include "render/raster_scene.h"
 #include "render/technique.h"
 #include "scene/camera.h"
@@ -51,6 +53,10 @@ class Radiosity final : public PixelTechnique {
     gouraud_ = ctx.params.getChoice("interpolate") == "gouraud";
     settings_ = a5::radiositySettings(ctx.params);
     classCorners_.clear();
+    skipped_.reset();
+    measured_ = ctx.params.getChoice("effects") == "measured";
+    effectsTolerance_ = ctx.params.getFloat("effects_tolerance");
+    if (measured_) settings_.progressive = true;  // what is not shot is not computed
     if (settings_.progressive) {
       progressive_ = a5::progressiveScene(ctx.scene, settings_);
       patches_ = progressive_.patches;
@@ -83,7 +89,10 @@ class Radiosity final : public PixelTechnique {
     // Pass k: until 32 * 2^k patches have shot; the last pass to the tolerance.
     const bool last = pass + 1 >= passCount(ctx);
     const size_t shots = last ? ~size_t{0} : size_t{32} << std::min(pass, 40);
-    progressive_.state->advance(shots, settings_.solver.tolerance);
+    if (measured_)
+      shootWhileItShows(shots, last);
+    else
+      progressive_.state->advance(shots, settings_.solver.tolerance);
     shown_ = progressive_.state->displayed();
     corners_ = cornerValues(patches_->mesh, shown_);
     fb.clearSamples();
@@ -126,6 +135,38 @@ class Radiosity final : public PixelTechnique {
   a5::ProgressiveScene progressive_;                   // or progressive refinement
   std::shared_ptr<const a5::PatchScene> patches_;
   std::vector<Rgb> shown_, corners_;  // per patch and per mesh vertex: the radiosity shown
+
+  // --set effects=measured: shoots (Southwell, rows computed per shot) up to `shots`, but only while the light
+  // still unshot shows, i.e. while the display without its ambient term differs from the display by more
+  // than effects_tolerance (relMSE, averaged over the patches by area). Patches whose unshot light does not
+  // show never shoot, and their hemicube rows are never computed.
+  void shootWhileItShows(size_t shots, bool last) {
+    a5::ProgressiveRadiosity& state = *progressive_.state;
+    while (state.unshotRelMse() > effectsTolerance_ && state.shots() < shots) {
+      const size_t before = state.shots();
+      state.advance(std::min(shots, before + std::max<size_t>(8, before / 8)), settings_.solver.tolerance);
+      if (state.shots() == before) break;  // converged to the solver's tolerance, or nothing left to shoot
+    }
+    if (!last) return;
+    SkippedWork w;
+    w.tolerance = effectsTolerance_;
+    w.errorAdded = w.errorAddedHigh = state.unshotRelMse();  // an estimate: the ambient term's, not a bound
+    const size_t rows = state.rowsComputed(), patches = patches_->mesh.patches.size();
+    char text[160];
+    std::snprintf(text, sizeof text, "the light of %zu of %zu patches, still unshot (the ambient term shows it)",
+                  patches - std::min(rows, patches), patches);
+    w.skipped = rows == 0 && w.errorAdded == 0.0 ? "nothing: no patch emits light" : text;
+    std::snprintf(text, sizeof text, "%zu of %zu hemicube rows computed (%.0f %% of the form factors not)", rows,
+                  patches, patches ? 100.0 * (1.0 - static_cast<double>(rows) / static_cast<double>(patches)) : 0.0);
+    w.saved = text;
+    skipped_ = w;
+  }
+
+  std::optional<SkippedWork> skippedWork() const override { return skipped_; }
+
+  bool measured_ = false;
+  double effectsTolerance_ = 1e-3;
+  std::optional<SkippedWork> skipped_;
 
   // The classes bounce 0, 1 and 2+ fall in; per class, the shown radiosity's part per patch and per vertex.
   static constexpr std::array<LightPathClass, 3> kSplit{LightPathClass::Emission, LightPathClass::DirectLighting,
@@ -211,6 +252,12 @@ std::vector<ParamDecl> radiosityParams() {
                         "where built with it: the framework's, independent of assignment 4; bvh, kdtree, octree: "
                         "assignment 4's)"),
       ParamDecl::integer("sphere_segments", 24, 6, 256, "tessellation of spheres into patches"),
+      ParamDecl::choice("effects", "all", {"all", "measured"},
+                        "all: solve to the tolerance; measured: progressive refinement that stops shooting once "
+                        "the light still unshot (its ambient term) changes the picture by less than "
+                        "effects_tolerance, so patches whose light does not show never shoot"),
+      ParamDecl::real("effects_tolerance", kDefaultEffectsTolerance, 0.0, 1.0,
+                      "effects=measured: the relMSE the unshot light may add"),
       ParamDecl::boolean("progressive", false,
                          "progressive refinement (Cohen 1988): Southwell shooting with hemicube rows computed "
                          "per shot; every pass shoots twice as many patches and redraws, the last to the "
@@ -305,7 +352,7 @@ TechniqueInfo radiosityRasterTechnique() {
   return {
       "radiosity-raster",
       "radiosity's solution drawn by the software rasterizer of assignment 1 (the same solve as `radiosity`, "
-      "another display; progressive does not apply)",
+      "another display; progressive and effects=measured do not apply)",
       EffectSet{Effect::DirectLighting, Effect::SoftShadows, Effect::HardShadows, Effect::DiffuseInterreflection,
                 Effect::Emission},
       3,

@@ -163,9 +163,14 @@ Command addRenderCommand(CLI::App& app, const GlobalOptions& global) {
       if (w.secondsPerPassSkipping > 0.0 && w.secondsPerPassFull > 0.0)
         std::snprintf(saved, sizeof saved, "%.0f %% less time per sample (measured on the probe)",
                       100.0 * (1.0 - w.secondsPerPassSkipping / w.secondsPerPassFull));
-      std::printf("effects=measured: left out %s; error added relMSE %.2g (95 %% bound %.2g, tolerance %.2g); %s; "
-                  "%.1f s of probing\n",
-                  w.skipped.c_str(), w.errorAdded, w.errorAddedHigh, w.tolerance, saved, w.probeSeconds);
+      else if (!w.saved.empty())
+        std::snprintf(saved, sizeof saved, "%s", w.saved.c_str());
+      char bound[64] = "";  // a probe's estimate has an interval; a measured or estimated value has none
+      if (w.errorAddedHigh != w.errorAdded) std::snprintf(bound, sizeof bound, "95 %% bound %.2g, ", w.errorAddedHigh);
+      char probing[48] = "";
+      if (w.probeSeconds > 0.0) std::snprintf(probing, sizeof probing, "; %.1f s of probing", w.probeSeconds);
+      std::printf("effects=measured: left out %s; error added relMSE %.2g (%stolerance %.2g); %s%s\n", w.skipped.c_str(),
+                  w.errorAdded, bound, w.tolerance, saved, probing);
     }
   };
 }

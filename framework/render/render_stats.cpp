@@ -52,7 +52,8 @@ nlohmann::json RenderStats::toJson() const {
                                            {"time_saved_fraction",
                                             skipped->secondsPerPassFull > 0
                                                 ? 1.0 - skipped->secondsPerPassSkipping / skipped->secondsPerPassFull
-                                                : 0.0}}
+                                                : 0.0},
+                                           {"saved", skipped->saved}}
                           : nlohmann::json(nullptr)},
   };
 }

@@ -44,6 +44,7 @@ struct SkippedWork {
   double errorAddedHigh = 0.0;    // its 95 % upper confidence bound
   double probeSeconds = 0.0;      // the measurement's own time
   double secondsPerPassFull = 0.0, secondsPerPassSkipping = 0.0;  // one pass of the probe, without and with skipping
+  std::string saved;  // what was saved where it is counted, not timed (radiosity: hemicube rows not computed)
 };
 
 struct RenderStats {

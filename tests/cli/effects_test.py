@@ -67,3 +67,21 @@ for name, expect_left in [("whitted_1980", True), ("cornell_box", False)]:
         assert skipped["what"].startswith("nothing"), skipped
         assert "no time saved" in text, text
     print(f"ok: {name} effects=measured: {skipped['what']}")
+
+# Whitted and radiosity measure themselves: whitted's rays all show on its scene (nothing left out);
+# radiosity stops shooting once the unshot light no longer shows, and says how many rows it did not compute.
+text = run("render", f"{scenes}/whitted_1980.json", "-t", "whitted", "--width", "64", "--height", "48",
+           "--set", "effects=measured", "--stats", f"{out}/whitted_w.json", "-o", f"{out}/whitted_w.png")
+skipped = json.load(open(f"{out}/whitted_w.json"))["skipped"]
+assert skipped["what"].startswith("nothing"), skipped
+assert re.search(r"^effects=measured: left out nothing: .*; error added relMSE 0 \(tolerance 0.001\); no time saved",
+                 text, re.M), text
+print("ok: whitted effects=measured:", skipped["what"])
+text = run("render", f"{scenes}/cornell_box.json", "-t", "radiosity", "--width", "64", "--height", "64",
+           "--set", "effects=measured", "--set", "hemicube_res=16", "--stats", f"{out}/cornell_r.json",
+           "-o", f"{out}/cornell_r.png")
+skipped = json.load(open(f"{out}/cornell_r.json"))["skipped"]
+assert 0 < skipped["error_added_relmse"] <= skipped["tolerance_relmse"], skipped
+assert re.search(r"\d+ of \d+ hemicube rows computed", skipped["saved"]), skipped
+assert re.search(r"^effects=measured: left out the light of \d+ of \d+ patches.*hemicube rows computed", text, re.M), text
+print("ok: radiosity effects=measured:", skipped["what"], "/", skipped["saved"])
