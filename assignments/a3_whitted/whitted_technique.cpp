@@ -123,7 +123,9 @@ class Whitted final : public PixelTechnique {
     std::string names;
     for (const auto& [alone, cls] : candidates)
       if (leftOut & lightPathBit(cls)) names += std::string(names.empty() ? "" : ", ") + lightPathClassName(cls);
-    w.skipped = names.empty() ? "nothing: every class whose rays the scene spawns shows" : names + " (their rays not traced)";
+    w.skipped = candidates.empty() ? "nothing: the scene has no mirror or glass to skip"
+                : names.empty()     ? "nothing: the light of its reflection and refraction rays shows"
+                                    : names + " (their rays not traced)";
     if (leftOut) {
       w.secondsPerPassFull = fullSeconds;
       w.secondsPerPassSkipping = seconds;

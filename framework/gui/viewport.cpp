@@ -201,6 +201,12 @@ std::vector<std::string> paneCaption(const AppState& app, int index, const std::
   }
   if (s.view == PaneView::LightPaths && s.lightPathTiles.empty() && s.image)
     lines.emplace_back("light paths: " + p.technique + " does not split its picture by light path (path does; radiosity with a form-factor matrix, by bounce)");
+  if (s.stats.skipped) {  // --set effects=measured: what was left out, and what it cost in error
+    const SkippedWork& w = *s.stats.skipped;
+    std::snprintf(buf, sizeof buf, "left out (measured): %s; relMSE %.2g of %.2g", w.skipped.c_str(), w.errorAdded,
+                  w.tolerance);
+    lines.emplace_back(buf);
+  }
   if (app.scene && !isCostView(s.view)) {
     const EffectSet missed = app.scene->effects.minus(findTechnique(p.technique).simulatesWith(p.techniqueParams));
     if (!missed.empty()) lines.push_back("misses: " + joinNames(missed.names()));

@@ -30,6 +30,7 @@ void RenderJob::run(const std::function<void(int, int)>& onPass) {
     const ScopedTaskLog scoped(&taskLog_);
     technique_.renderPass(ctx, pass, frame_, stats_.work, cancel_);
     if (cancel_) break;
+    stats_.skipped = technique_.skippedWork();  // (decided in prepare(), or as late as the last pass)
     frame_.completePass();
     stats_.passes = frame_.passes();
     stats_.renderSeconds = timer.seconds();
