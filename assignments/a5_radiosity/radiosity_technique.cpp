@@ -153,8 +153,8 @@ class Radiosity final : public PixelTechnique {
     w.errorAdded = w.errorAddedHigh = state.unshotRelMse();  // an estimate: the ambient term's, not a bound
     const size_t rows = state.rowsComputed(), patches = patches_->mesh.patches.size();
     char text[160];
-    std::snprintf(text, sizeof text, "the light of %zu of %zu patches, still unshot (the ambient term shows it)",
-                  patches - std::min(rows, patches), patches);
+    std::snprintf(text, sizeof text, "the shots of %zu of %zu patches, whose unshot light does not show (the "
+                  "ambient term stands for it)", patches - std::min(rows, patches), patches);
     w.skipped = rows == 0 && w.errorAdded == 0.0 ? "nothing: no patch emits light" : text;
     std::snprintf(text, sizeof text, "%zu of %zu hemicube rows computed (%.0f %% of the form factors not)", rows,
                   patches, patches ? 100.0 * (1.0 - static_cast<double>(rows) / static_cast<double>(patches)) : 0.0);

@@ -83,5 +83,5 @@ text = run("render", f"{scenes}/cornell_box.json", "-t", "radiosity", "--width",
 skipped = json.load(open(f"{out}/cornell_r.json"))["skipped"]
 assert 0 < skipped["error_added_relmse"] <= skipped["tolerance_relmse"], skipped
 assert re.search(r"\d+ of \d+ hemicube rows computed", skipped["saved"]), skipped
-assert re.search(r"^effects=measured: left out the light of \d+ of \d+ patches.*hemicube rows computed", text, re.M), text
+assert re.search(r"^effects=measured: left out the shots of \d+ of \d+ patches.*hemicube rows computed", text, re.M), text
 print("ok: radiosity effects=measured:", skipped["what"], "/", skipped["saved"])
