@@ -153,24 +153,21 @@ TechniqueInfo whittedTechnique() {
       EffectSet{Effect::DirectLighting, Effect::HardShadows, Effect::SoftShadows, Effect::MirrorReflection,
                 Effect::Refraction, Effect::GlossyHighlights, Effect::Textures, Effect::Emission},
       2,
-      {
-          ParamDecl::integer("max_depth", 5, 0, 64, "deepest ray traced (0 = camera rays only, as ray casting)"),
-          ParamDecl::real("min_throughput", 1e-3, 0.0, 1.0,
-                          "rays weighing less than this in the pixel (max over r, g, b) are not traced"),
-          ParamDecl::choice("fresnel", "exact", {"exact", "schlick"},
-                            "exact: the Fresnel equations for unpolarised light; schlick: Schlick's approximation"),
-          ParamDecl::choice("shadows", "filtered", {"filtered", "opaque"},
-                            "filtered: shadow rays pass through transmissive surfaces, tinted by them and absorbed "
-                            "inside (Beer-Lambert); opaque: "
-                            "every surface blocks light"),
-          ParamDecl::integer("light_samples", 16, 1, 1024, "shadow-ray samples per area light per pixel sample"),
-          ParamDecl::choice("effects", "all", {"all", "measured"},
-                            "all: trace every ray the scene calls for; measured: leave out refraction or "
-                            "mirror-reflection rays whose light changes the picture by less than effects_tolerance "
-                            "(measured on a small render with and without them)"),
-          ParamDecl::real("effects_tolerance", kDefaultEffectsTolerance, 0.0, 1.0,
-                          "effects=measured: the relMSE a left-out class may add"),
-      },
+      withEffectsParams(
+          {
+            ParamDecl::integer("max_depth", 5, 0, 64, "deepest ray traced (0 = camera rays only, as ray casting)"),
+            ParamDecl::real("min_throughput", 1e-3, 0.0, 1.0,
+                            "rays weighing less than this in the pixel (max over r, g, b) are not traced"),
+            ParamDecl::choice("fresnel", "exact", {"exact", "schlick"},
+                              "exact: the Fresnel equations for unpolarised light; schlick: Schlick's approximation"),
+            ParamDecl::choice("shadows", "filtered", {"filtered", "opaque"},
+                              "filtered: shadow rays pass through transmissive surfaces, tinted by them and absorbed "
+                              "inside (Beer-Lambert); opaque: "
+                              "every surface blocks light"),
+            ParamDecl::integer("light_samples", 16, 1, 1024, "shadow-ray samples per area light per pixel sample"),
+          },
+          "leave out refraction or mirror-reflection rays whose light changes the picture by less than "
+          "effects_tolerance (measured on a small render with and without them)"),
       []() -> std::unique_ptr<Technique> { return std::make_unique<Whitted>(); },
   };
 }

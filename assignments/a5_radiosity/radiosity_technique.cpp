@@ -252,12 +252,6 @@ std::vector<ParamDecl> radiosityParams() {
                         "where built with it: the framework's, independent of assignment 4; bvh, kdtree, octree: "
                         "assignment 4's)"),
       ParamDecl::integer("sphere_segments", 24, 6, 256, "tessellation of spheres into patches"),
-      ParamDecl::choice("effects", "all", {"all", "measured"},
-                        "all: solve to the tolerance; measured: progressive refinement that stops shooting once "
-                        "the light still unshot (its ambient term) changes the picture by less than "
-                        "effects_tolerance, so patches whose light does not show never shoot"),
-      ParamDecl::real("effects_tolerance", kDefaultEffectsTolerance, 0.0, 1.0,
-                      "effects=measured: the relMSE the unshot light may add"),
       ParamDecl::boolean("progressive", false,
                          "progressive refinement (Cohen 1988): Southwell shooting with hemicube rows computed "
                          "per shot; every pass shoots twice as many patches and redraws, the last to the "
@@ -341,7 +335,10 @@ TechniqueInfo radiosityTechnique() {
       EffectSet{Effect::DirectLighting, Effect::SoftShadows, Effect::HardShadows, Effect::DiffuseInterreflection,
                 Effect::Emission},
       3,
-      radiosityParams(),
+      withEffectsParams(radiosityParams(),
+                        "progressive refinement that stops shooting once the light still unshot (its ambient "
+                        "term) changes the picture by less than effects_tolerance, so patches whose light does "
+                        "not show never shoot"),
       []() -> std::unique_ptr<Technique> { return std::make_unique<Radiosity>(); },
   };
 }
@@ -352,7 +349,7 @@ TechniqueInfo radiosityRasterTechnique() {
   return {
       "radiosity-raster",
       "radiosity's solution drawn by the software rasterizer of assignment 1 (the same solve as `radiosity`, "
-      "another display; progressive and effects=measured do not apply)",
+      "another display; progressive does not apply)",
       EffectSet{Effect::DirectLighting, Effect::SoftShadows, Effect::HardShadows, Effect::DiffuseInterreflection,
                 Effect::Emission},
       3,

@@ -274,22 +274,20 @@ TechniqueInfo pathTechnique() {
                 Effect::Refraction, Effect::GlossyHighlights, Effect::DiffuseInterreflection, Effect::Textures,
                 Effect::Emission, Effect::GlossyReflection, Effect::SkyLight, Effect::Dispersion, Effect::Caustics},
       10,
-      {
-          ParamDecl::integer("max_depth", 16, 0, 256,
-                             "most bounces of a path (0 = what the camera sees emitted, 1 = direct light only)"),
-          ParamDecl::integer("rr_depth", 3, 0, 256, "bounces before Russian roulette may end a path"),
-          ParamDecl::boolean("spectral", false,
-                             "hero-wavelength spectral rendering: measured spectra, RGB upsampled (Smits 1999), "
-                             "dispersion; false = RGB"),
-          ParamDecl::choice("strategy", "mis", {"mis", "light", "bsdf"},
-                            "direct light from: mis = light and BSDF sampling combined; light = light samples only; "
-                            "bsdf = only paths that hit an emitter"),
-          ParamDecl::choice("effects", "all", {"all", "measured"},
-                            "all = every light path; measured = a short probe first, then leave out the "
-                            "light-path classes whose absence stays within effects_tolerance"),
-          ParamDecl::real("effects_tolerance", kDefaultEffectsTolerance, 0.0, 1.0,
-                          "relMSE a left-out class may add (effects=measured; the probe's 95 % upper bound)"),
-      },
+      withEffectsParams(
+          {
+              ParamDecl::integer("max_depth", 16, 0, 256,
+                                 "most bounces of a path (0 = what the camera sees emitted, 1 = direct light only)"),
+              ParamDecl::integer("rr_depth", 3, 0, 256, "bounces before Russian roulette may end a path"),
+              ParamDecl::boolean("spectral", false,
+                                 "hero-wavelength spectral rendering: measured spectra, RGB upsampled (Smits 1999), "
+                                 "dispersion; false = RGB"),
+              ParamDecl::choice("strategy", "mis", {"mis", "light", "bsdf"},
+                                "direct light from: mis = light and BSDF sampling combined; "
+                                "light = light samples only; bsdf = only paths that hit an emitter"),
+          },
+          "a short path-traced probe first, then leave out the light-path classes whose absence stays within "
+          "effects_tolerance (the probe's 95 % upper bound)"),
       []() -> std::unique_ptr<Technique> { return std::make_unique<PathTracing>(); },
       false,
       {{"spectral", "true", EffectSet{Effect::Dispersion}}},  // one index per material in RGB

@@ -169,8 +169,8 @@ Command addRenderCommand(CLI::App& app, const GlobalOptions& global) {
       if (w.errorAddedHigh != w.errorAdded) std::snprintf(bound, sizeof bound, "95 %% bound %.2g, ", w.errorAddedHigh);
       char probing[48] = "";
       if (w.probeSeconds > 0.0) std::snprintf(probing, sizeof probing, "; %.1f s of probing", w.probeSeconds);
-      std::printf("effects=measured: left out %s; error added relMSE %.2g (%stolerance %.2g); %s%s\n", w.skipped.c_str(),
-                  w.errorAdded, bound, w.tolerance, saved, probing);
+      std::printf("effects=measured: left out %s; error added relMSE %.2g (%stolerance %.2g); %s%s\n",
+                  w.skipped.c_str(), w.errorAdded, bound, w.tolerance, saved, probing);
     }
   };
 }

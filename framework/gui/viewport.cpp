@@ -200,7 +200,9 @@ std::vector<std::string> paneCaption(const AppState& app, int index, const std::
     lines.emplace_back(buf);
   }
   if (s.view == PaneView::LightPaths && s.lightPathTiles.empty() && s.image)
-    lines.emplace_back("light paths: " + p.technique + " does not split its picture by light path (path does; radiosity with a form-factor matrix, by bounce)");
+    lines.emplace_back("light paths: " + p.technique +
+                       " does not split its picture by light path (path does; radiosity with a "
+                       "form-factor matrix, by bounce)");
   if (s.stats.skipped) {  // --set effects=measured: what was left out, and what it cost in error
     const SkippedWork& w = *s.stats.skipped;
     std::snprintf(buf, sizeof buf, "left out (measured): %s; relMSE %.2g of %.2g", w.skipped.c_str(), w.errorAdded,

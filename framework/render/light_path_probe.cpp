@@ -168,4 +168,12 @@ Estimate LightPathProbe::relMseWithout(LightPathMask classes) const {
   return {std::max(0.0, all), std::max(0.0, all - half), std::max(0.0, all + half)};
 }
 
+std::vector<ParamDecl> withEffectsParams(std::vector<ParamDecl> params, const std::string& measuredHelp) {
+  params.push_back(ParamDecl::choice("effects", "all", {"all", "measured"},
+                                     "all: everything the scene calls for; measured: " + measuredHelp));
+  params.push_back(ParamDecl::real("effects_tolerance", kDefaultEffectsTolerance, 0.0, 1.0,
+                                   "effects=measured: the relMSE what is left out may add"));
+  return params;
+}
+
 }  // namespace ll

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "core/image.h"
@@ -20,6 +21,11 @@ namespace ll {
 // The relMSE below which leaving a light-path class out does not show: `lightlab info --tolerance` and
 // `path --set effects_tolerance`. The README's "Which effects does a scene call for?" gives the study behind it.
 inline constexpr double kDefaultEffectsTolerance = 1e-3;
+
+// `params` with the two parameters of `--set effects=measured` (path, whitted, radiosity) appended:
+// effects = all | measured, and effects_tolerance (relMSE). `measuredHelp` says what the technique leaves
+// out and how it measures that.
+std::vector<ParamDecl> withEffectsParams(std::vector<ParamDecl> params, const std::string& measuredHelp);
 
 struct LightPathProbeSettings {
   int width = 128;              // pixels; the height keeps the camera's aspect ratio
