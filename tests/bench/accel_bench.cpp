@@ -1,9 +1,11 @@
 // Accelerator benchmarks: closest-hit and any-hit throughput (Mrays/s, one
 // thread unless the name says t2) for coherent (camera) and incoherent
-// (random origin in the scene's box, random direction) rays, and build time,
+// (random origin in the scene's box, random direction) rays, for the rays a
+// path tracer really traces (recorded from `path` on the Cornell box with the
+// bunny: camera and bounce rays closest-hit, shadow rays any-hit), and build time,
 // for every BVH split method, the KD-tree, the octree and Embree in the same
 // run, on the bunny (3.7k, 59k, 235k triangles), the Cornell box with the 59k
-// bunny and a soup of 1M random triangles.
+// and the 235k bunny, and a soup of 1M random triangles.
 //
 //   build-dir/tests/bench/lightlab_bench --benchmark_filter=Accel
 //     --benchmark_repetitions=5 --benchmark_enable_random_interleaving=true
@@ -16,6 +18,7 @@
 #include <atomic>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <random>
 #include <string>
 #include <vector>
@@ -24,6 +27,7 @@
 #include <tbb/task_arena.h>
 
 #include "modules/registry.h"
+#include "render/render_job.h"
 #include "scene/camera.h"
 #include "scene/scene_loader.h"
 
@@ -42,6 +46,7 @@ const std::vector<BenchScene>& benchScenes() {
       {"bunny59k", std::string(LIGHTLAB_BUILD_DATA_DIR) + "/scenes/bunny_59k.json"},
       {"bunny235k", std::string(LIGHTLAB_BUILD_DATA_DIR) + "/scenes/bunny_235k.json"},
       {"cornell59k", std::string(LIGHTLAB_BUILD_DATA_DIR) + "/scenes/cornell_bunny_59k.json"},
+      {"cornell235k", std::string(LIGHTLAB_BUILD_DATA_DIR) + "/scenes/cornell_bunny_235k.json"},
       {"soup1M", ""},
   };
   return kScenes;
@@ -142,10 +147,73 @@ const std::vector<Ray>& rays(const BenchScene& s, bool coherent) {
   return slot;
 }
 
-void trace(benchmark::State& state, const BenchScene& s, const BenchAccel& a, bool coherent, bool anyHit,
+// The rays a path tracer really traces: every query of `path` (its defaults: MIS, Russian roulette) rendering
+// the scene at 96x96 with 16 spp on one thread, in the order it makes them (tile by tile, pixel by pixel,
+// each path's bounces in turn). Closest-hit queries are its camera and bounce rays, any-hit queries its
+// shadow rays towards the lights.
+class RecordingAccelerator final : public Accelerator {
+ public:
+  explicit RecordingAccelerator(const Accelerator& inner) : inner_(inner) {}
+  void build(const Geometry&) override {}
+  bool intersect(const Ray& ray, Hit& hit, QueryCounters& counters) const override {
+    {
+      const std::lock_guard lock(mutex_);
+      closest.push_back(ray);
+    }
+    return inner_.intersect(ray, hit, counters);
+  }
+  bool occluded(const Ray& ray, QueryCounters& counters) const override {
+    {
+      const std::lock_guard lock(mutex_);
+      shadow.push_back(ray);
+    }
+    return inner_.occluded(ray, counters);
+  }
+  AcceleratorStats stats() const override { return inner_.stats(); }
+  mutable std::vector<Ray> closest, shadow;
+
+ private:
+  const Accelerator& inner_;
+  mutable std::mutex mutex_;  // (the render runs on one thread, so the order is the path tracer's)
+};
+
+struct PathRays {
+  std::vector<Ray> closest, shadow;
+};
+
+const PathRays& pathRays(const BenchScene& s) {
+  static std::map<std::string, PathRays> cache;
+  auto it = cache.find(s.name);
+  if (it != cache.end()) return it->second;
+  const Scene& sc = scene(s);
+  const AcceleratorInfo& bvh = findAccelerator("bvh");
+  const auto inner = buildAccelerator(bvh, ParamSet(bvh.name, bvh.params), sc.geometry);
+  RecordingAccelerator recorder(*inner);
+  const TechniqueInfo& path = findTechnique("path");
+  const auto technique = path.make();
+  RenderSettings rs;
+  rs.width = rs.height = 96;
+  rs.spp = 16;
+  rs.seed = 1;
+  const ParamSet params(path.name, path.params);  // (RenderJob keeps a reference)
+  tbb::task_arena(1).execute([&] {
+    RenderJob job(sc, recorder, *technique, params, rs);
+    job.run();
+  });
+  return cache[s.name] = PathRays{std::move(recorder.closest), std::move(recorder.shadow)};
+}
+
+enum class RaySet { Coherent, Incoherent, Path };
+
+const std::vector<Ray>& raySet(const BenchScene& s, RaySet set, bool anyHit) {
+  if (set != RaySet::Path) return rays(s, set == RaySet::Coherent);
+  return anyHit ? pathRays(s).shadow : pathRays(s).closest;
+}
+
+void trace(benchmark::State& state, const BenchScene& s, const BenchAccel& a, RaySet set, bool anyHit,
            int threads) {
   const Accelerator& accel = accelerator(s, a);
-  const std::vector<Ray>& rs = rays(s, coherent);
+  const std::vector<Ray>& rs = raySet(s, set, anyHit);
   tbb::task_arena arena(threads);
   std::atomic<uint64_t> nodes{0}, prims{0};  // over all iterations, for the per-ray means
   for (auto _ : state) {
@@ -183,20 +251,25 @@ void build(benchmark::State& state, const BenchScene& s, const BenchAccel& a) {
                                                   benchmark::Counter::kIsIterationInvariantRate);
 }
 
-// Registers Accel/<closest|anyhit>/<scene>/<coherent|incoherent>/<accel>[/t2] and Accel/build/<scene>/<accel>.
+// Registers Accel/<closest|anyhit>/<scene>/<coherent|incoherent|path>/<accel>[/t2] and
+// Accel/build/<scene>/<accel>. `path` rays (closest: camera and bounce rays; anyhit: shadow rays) only on the
+// scenes a path tracer lights: the Cornell box with the bunny.
 const bool kRegistered = [] {
   for (const BenchScene& s : benchScenes())
     for (const BenchAccel& a : benchAccels()) {
+      const bool lit = std::string(s.name).starts_with("cornell");
       for (bool anyHit : {false, true})
-        for (bool coherent : {true, false}) {
-          const std::string name = std::string("Accel/") + (anyHit ? "anyhit/" : "closest/") + s.name + "/" +
-                                   (coherent ? "coherent/" : "incoherent/") + a.label;
-          benchmark::RegisterBenchmark(name.c_str(), [&s, &a, coherent, anyHit](benchmark::State& st) {
-            trace(st, s, a, coherent, anyHit, 1);
+        for (RaySet set : {RaySet::Coherent, RaySet::Incoherent, RaySet::Path}) {
+          if (set == RaySet::Path && !lit) continue;
+          const char* setName = set == RaySet::Coherent ? "coherent/" : set == RaySet::Incoherent ? "incoherent/" : "path/";
+          const std::string name =
+              std::string("Accel/") + (anyHit ? "anyhit/" : "closest/") + s.name + "/" + setName + a.label;
+          benchmark::RegisterBenchmark(name.c_str(), [&s, &a, set, anyHit](benchmark::State& st) {
+            trace(st, s, a, set, anyHit, 1);
           })->Unit(benchmark::kMillisecond)->UseRealTime();
-          if (!anyHit && !coherent && std::string(s.name) == "bunny59k")
-            benchmark::RegisterBenchmark((name + "/t2").c_str(), [&s, &a](benchmark::State& st) {
-              trace(st, s, a, false, false, 2);
+          if (!anyHit && ((set == RaySet::Incoherent && std::string(s.name) == "bunny59k") || set == RaySet::Path))
+            benchmark::RegisterBenchmark((name + "/t2").c_str(), [&s, &a, set](benchmark::State& st) {
+              trace(st, s, a, set, false, 2);
             })->Unit(benchmark::kMillisecond)->UseRealTime();
         }
       benchmark::RegisterBenchmark((std::string("Accel/build/") + s.name + "/" + a.label).c_str(),
