@@ -38,7 +38,7 @@ class Whitted final : public PixelTechnique {
  public:
   Whitted() = default;
   // A Whitted tracer that leaves these classes out whatever its parameters say (effects=measured's trials).
-  explicit Whitted(LightPathMask leftOut) : trial_(true), fixedLeftOut_(leftOut) {}
+  explicit Whitted(LightPathMask leftOut) : fixedLeftOut_(leftOut) {}
 
   void prepare(const RenderContext& ctx) override {
     camera_ = renderCamera(ctx.scene, ctx.settings);
@@ -50,8 +50,9 @@ class Whitted final : public PixelTechnique {
     settings_.filteredShadows = p.getChoice("shadows") == "filtered";
     settings_.lightSamples = p.getInt("light_samples");
     skipped_.reset();
-    LightPathMask leftOut = fixedLeftOut_;
-    if (!trial_ && p.getChoice("effects") == "measured") leftOut = measureEffects(ctx);
+    const LightPathMask leftOut = fixedLeftOut_            ? *fixedLeftOut_
+                                  : p.getChoice("effects") == "measured" ? measureEffects(ctx)
+                                                                         : 0;
     settings_.skipRefraction = leftOut & lightPathBit(LightPathClass::Refraction);
     settings_.skipMirrorReflection = leftOut & lightPathBit(LightPathClass::MirrorReflection);
   }
@@ -96,22 +97,33 @@ class Whitted final : public PixelTechnique {
       return std::make_pair(job.frame().resolve(false), job.stats().renderSeconds / rs.spp);
     };
     const auto [full, fullSeconds] = render(0);
-    // Only the classes whose rays the scene spawns at all are candidates.
-    std::vector<std::pair<double, LightPathClass>> candidates;
+    // Only the classes whose rays the scene spawns at all are candidates: each one's error and time alone.
+    struct Candidate {
+      double error, secondsPerPass;
+      LightPathClass cls;
+    };
+    std::vector<Candidate> candidates;
     for (const auto& [cls, effect] : {std::pair{LightPathClass::Refraction, Effect::Refraction},
                                       std::pair{LightPathClass::MirrorReflection, Effect::MirrorReflection}})
-      if (ctx.scene.effects.has(effect))
-        candidates.emplace_back(compareImages(render(lightPathBit(cls)).first, full).relmse, cls);
-    std::sort(candidates.begin(), candidates.end());
+      if (ctx.scene.effects.has(effect)) {
+        const auto [without, perPass] = render(lightPathBit(cls));
+        candidates.push_back({compareImages(without, full).relmse, perPass, cls});
+      }
+    std::sort(candidates.begin(), candidates.end(),
+              [](const Candidate& a, const Candidate& b) { return a.error < b.error; });
     const double tolerance = ctx.params.getFloat("effects_tolerance");
     LightPathMask leftOut = 0;
     double error = 0.0, seconds = fullSeconds;
-    for (const auto& [alone, cls] : candidates) {
-      if (alone > tolerance) break;
-      const auto [without, perPass] = render(leftOut | lightPathBit(cls));
-      const double together = compareImages(without, full).relmse;
+    for (const Candidate& c : candidates) {
+      if (c.error > tolerance) break;
+      double together = c.error, perPass = c.secondsPerPass;  // the first one left out: its own render
+      if (leftOut) {
+        const auto [without, combinedPerPass] = render(leftOut | lightPathBit(c.cls));
+        together = compareImages(without, full).relmse;
+        perPass = combinedPerPass;
+      }
       if (together > tolerance) break;
-      leftOut |= lightPathBit(cls);
+      leftOut |= lightPathBit(c.cls);
       error = together;
       seconds = perPass;
     }
@@ -121,8 +133,8 @@ class Whitted final : public PixelTechnique {
     w.errorAdded = error;
     w.errorAddedHigh = error;  // measured on the same streams: no sampling interval
     std::string names;
-    for (const auto& [alone, cls] : candidates)
-      if (leftOut & lightPathBit(cls)) names += std::string(names.empty() ? "" : ", ") + lightPathClassName(cls);
+    for (const Candidate& c : candidates)
+      if (leftOut & lightPathBit(c.cls)) names += std::string(names.empty() ? "" : ", ") + lightPathClassName(c.cls);
     w.skipped = candidates.empty() ? "nothing: the scene has no mirror or glass to skip"
                 : names.empty()     ? "nothing: the light of its reflection and refraction rays shows"
                                     : names + " (their rays not traced)";
@@ -135,8 +147,7 @@ class Whitted final : public PixelTechnique {
     return leftOut;
   }
 
-  bool trial_ = false;  // one of measureEffects()'s renders: leaves out fixedLeftOut_, measures nothing
-  LightPathMask fixedLeftOut_ = 0;
+  std::optional<LightPathMask> fixedLeftOut_;  // set in measureEffects()'s trial renders: they measure nothing
   std::optional<SkippedWork> skipped_;
   Camera camera_;
   std::optional<CameraFrame> frame_;

@@ -109,21 +109,16 @@ class Radiosity final : public PixelTechnique {
     const a5::PatchMesh& mesh = patches_->mesh;
     const uint32_t patch = mesh.primPatch[hit.prim];  // (a quad patch is two triangles)
     if (glm::dot(mesh.patches[patch].normal, ray.dir) >= 0.0f) return Rgb(0.0f);  // the back of a patch: not solved
-    Rgb b = shown_[patch];
-    if (gouraud_) {
-      const glm::uvec3& t = mesh.geometry.triangles[hit.prim];
-      b = (1.0f - hit.b1 - hit.b2) * corners_[t.x] + hit.b1 * corners_[t.y] + hit.b2 * corners_[t.z];
-    }
-    if (s.lightPaths && !classCorners_.empty()) {
-      const glm::uvec3& t = mesh.geometry.triangles[hit.prim];
-      for (size_t k = 0; k < kSplit.size(); ++k) {
-        const std::vector<Rgb>& c = classCorners_[k];
-        const Rgb part = gouraud_ ? (1.0f - hit.b1 - hit.b2) * c[t.x] + hit.b1 * c[t.y] + hit.b2 * c[t.z]
-                                  : classPatches_[k][patch];
-        s.lightPaths[static_cast<size_t>(kSplit[k])] = part / kPi;
-      }
-    }
-    return b / kPi;  // a diffuse surface's radiance
+    // A per-patch radiosity at the hit: from the patch corners (Gouraud) or the patch's own value.
+    const glm::uvec3& t = mesh.geometry.triangles[hit.prim];
+    const auto at = [&](const std::vector<Rgb>& perPatch, const std::vector<Rgb>& perCorner) {
+      return gouraud_ ? (1.0f - hit.b1 - hit.b2) * perCorner[t.x] + hit.b1 * perCorner[t.y] + hit.b2 * perCorner[t.z]
+                      : perPatch[patch];
+    };
+    if (s.lightPaths && !classCorners_.empty())
+      for (size_t k = 0; k < kSplit.size(); ++k)
+        s.lightPaths[static_cast<size_t>(kSplit[k])] = at(classPatches_[k], classCorners_[k]) / kPi;
+    return at(shown_, corners_) / kPi;  // a diffuse surface's radiance
   }
 
  private:
