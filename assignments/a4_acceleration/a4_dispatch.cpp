@@ -43,4 +43,14 @@ bool occludedOctree(const Octree& tree, const Ray& ray, QueryCounters& counters)
   return f(tree, ray, counters);
 }
 
+bool intersectBsp(const BspTree& tree, const Ray& ray, Hit& hit, QueryCounters& counters) {
+  static const tasks::TaskFunction<decltype(intersectBsp)> f("A4.5", "intersectBsp");
+  return f(tree, ray, hit, counters);
+}
+
+bool occludedBsp(const BspTree& tree, const Ray& ray, QueryCounters& counters) {
+  static const tasks::TaskFunction<decltype(occludedBsp)> f("A4.5", "occludedBsp");
+  return f(tree, ray, counters);
+}
+
 }  // namespace ll::a4

@@ -1,5 +1,5 @@
 // The hard cases of tests/numerics, graded for the traversal each task writes
-// (A4.2 the BVH, A4.3 the KD-tree, A4.4 the octree): every ray has an exact
+// (A4.2 the BVH, A4.3 the KD-tree, A4.4 the octree, A4.5 the BSP tree): every ray has an exact
 // answer, and each failure says which case broke and why it matters.
 #include <gtest/gtest.h>
 
@@ -49,6 +49,7 @@ void allCases(const char* accelerator) {
 TEST(A4_2_HardCases, FlatBoxesPlanesSharedEdgesAndClosedMeshes) { allCases("bvh"); }
 TEST(A4_3_HardCases, FlatBoxesPlanesSharedEdgesAndClosedMeshes) { allCases("kdtree"); }
 TEST(A4_4_HardCases, FlatBoxesPlanesSharedEdgesAndClosedMeshes) { allCases("octree"); }
+TEST(A4_5_HardCases, FlatBoxesPlanesSharedEdgesAndClosedMeshes) { allCases("bsp"); }
 
 }  // namespace
 }  // namespace ll

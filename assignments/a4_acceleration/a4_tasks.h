@@ -1,6 +1,6 @@
 // Assignment 4 -- Acceleration structures: a bounding volume hierarchy, a
-// KD-tree and an octree. The functions you write. Each lives in its own .cpp file between the
-// markers of its task ID; the accelerators `bvh`, `kdtree` and `octree`
+// KD-tree, an octree and a BSP tree. The functions you write. Each lives in its own .cpp file between the
+// markers of its task ID; the accelerators `bvh`, `kdtree`, `octree` and `bsp`
 // (*_accelerator.cpp) call them. Until you write one, its stub reports the
 // task as missing and the task's reference (the course's solution, object
 // code) answers in its place: the same picture. See README.md for the handout
@@ -11,6 +11,7 @@
 #include <span>
 
 #include "accel/accelerator.h"
+#include "bsp.h"
 #include "bvh.h"
 #include "kdtree.h"
 #include "octree.h"
@@ -74,5 +75,18 @@ bool intersectOctree(const Octree& tree, const Ray& ray, Hit& hit, QueryCounters
 
 // A4.4 (any hit): whether anything is hit with ray.tmin < t < ray.tmax.
 bool occludedOctree(const Octree& tree, const Ray& ray, QueryCounters& counters);
+
+// A4.5 BSP tree traversal (optional). The closest hit as in A4.3, across
+// planes of any orientation: at an interior node the origin's signed
+// distance to the plane, dot(normal, origin) - offset, says which child it
+// starts in (below when negative), and the ray crosses the plane at tSplit =
+// -distance / dot(normal, dir) -- +-infinity for a ray parallel to it, NaN
+// for a ray lying in it (both children, the whole interval). Otherwise the
+// walk is A4.3's: front to back, a stack of kBspStackSize entries, stop once
+// the closest hit lies inside the current cell (allow r.tSlack).
+bool intersectBsp(const BspTree& tree, const Ray& ray, Hit& hit, QueryCounters& counters);
+
+// A4.5 (any hit): whether anything is hit with ray.tmin < t < ray.tmax.
+bool occludedBsp(const BspTree& tree, const Ray& ray, QueryCounters& counters);
 
 }  // namespace ll::a4

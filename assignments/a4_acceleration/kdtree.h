@@ -3,7 +3,8 @@
 // primitives: a node's cell is cut by one axis-aligned plane, and a primitive
 // whose box reaches across the plane is referenced by both children (leaf
 // slots may repeat a primitive). Framework code: buildKdTree() chooses every
-// plane by the surface area heuristic over binned candidate planes.
+// plane by the surface area heuristic, over every candidate plane with sorted
+// event lists (Wald and Havran 2006), or over binned candidates.
 #pragma once
 
 #include <bit>
@@ -16,14 +17,21 @@
 
 namespace ll::a4 {
 
+// How the build finds each node's plane. Sweep: every face of every box is a
+// candidate, swept in sorted order (Wald and Havran 2006, O(n log n) for the
+// tree); binned: `bins` - 1 evenly spaced candidates per axis plus the faces
+// of the primitives' box, counted in bins at every node.
+enum class KdBuild { Sweep, Binned };
+
 struct KdSettings {
+  KdBuild build = KdBuild::Sweep;
   int maxDepth = 0;  // most splits above a leaf, not counting empty-space cuts; 0 = 8 + 1.3 log2(n), PBRT's rule
   int maxLeaf = 2;                // nodes with at most this many primitives become leaves, unless
                                   // cutting off empty space lowers their SAH cost
   float traversalCost = 1.0f;     // SAH: cost of one traversal step ...
   float intersectionCost = 1.5f;  // ... relative to one primitive test
   float emptyBonus = 0.5f;        // SAH: a split with an empty side costs (1 - emptyBonus) times as much
-  int bins = 32;                  // candidate planes per axis: bins - 1 bin boundaries
+  int bins = 32;                  // binned build: candidate planes per axis: bins - 1 bin boundaries
 };
 
 // Deepest tree the build makes (empty-space cuts included); traversal stacks

@@ -91,7 +91,10 @@ AcceleratorInfo kdtreeAccelerator() {
            ParamDecl::real("intersection_cost", 1.5, 0.01, 100.0, "SAH: cost of one primitive test"),
            ParamDecl::real("empty_bonus", 0.5, 0.0, 1.0,
                            "SAH: a split with an empty side costs (1 - empty_bonus) as much"),
-           ParamDecl::integer("bins", 32, 2, 64, "SAH candidate planes per axis (bin boundaries + 1)")},
+           ParamDecl::choice("build", "sweep", {"sweep", "binned"},
+                             "how each plane is found: sweep = every face of every box, swept in sorted order "
+                             "(Wald and Havran 2006), binned = bin boundaries and the primitives' box faces"),
+           ParamDecl::integer("bins", 32, 2, 64, "binned build: SAH candidate planes per axis (bin boundaries + 1)")},
           [](const ParamSet& p) -> std::unique_ptr<Accelerator> {
             a4::KdSettings s;
             s.maxDepth = p.getInt("max_depth");
@@ -99,6 +102,7 @@ AcceleratorInfo kdtreeAccelerator() {
             s.traversalCost = static_cast<float>(p.getFloat("traversal_cost"));
             s.intersectionCost = static_cast<float>(p.getFloat("intersection_cost"));
             s.emptyBonus = static_cast<float>(p.getFloat("empty_bonus"));
+            s.build = p.getChoice("build") == "binned" ? a4::KdBuild::Binned : a4::KdBuild::Sweep;
             s.bins = p.getInt("bins");
             return std::make_unique<KdTreeAccelerator>(s);
           }};

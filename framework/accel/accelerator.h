@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/math.h"
@@ -42,6 +43,7 @@ struct NodeShape {
   Vec3 center{0.0f};
   float radius = 0.0f;
   bool leaf = false;
+  std::vector<std::pair<Vec3, Vec3>> edges;  // a convex cell (BSP tree): drawn instead of the box when given
 };
 
 class Accelerator {

@@ -101,7 +101,7 @@ void finalizeScores(GradeResult& result) {
                   : error          ? Status::Error
                                    : Status::Failed;
     result.score += task.score;
-    result.maxScore += task.points;
+    if (!task.optional) result.maxScore += task.points;
   }
 }
 

@@ -29,11 +29,11 @@ GradeResult sample() {
   GradeResult r;
   r.assignment = "A9";
   r.title = "Sample <&>";
-  TaskResult a{"A9.1", "weighted", 30.0, 0.0, Status::Error, {}, "", ""};
+  TaskResult a{"A9.1", "weighted", 30.0, false, 0.0, Status::Error, {}, "", ""};
   a.tests = {test("A9.1", Status::Passed, 2.0), test("A9.1", Status::Failed, 1.0, "A9.1: off by \"one\"")};
-  TaskResult b{"A9.2", "stub", 20.0, 0.0, Status::Error, {}, "", ""};
+  TaskResult b{"A9.2", "stub", 20.0, false, 0.0, Status::Error, {}, "", ""};
   b.tests = {test("A9.2", Status::Passed, 1.0), test("A9.2", Status::NotImplemented, 1.0, "A9.2 not implemented")};
-  TaskResult c{"A9.3", "all good", 50.0, 0.0, Status::Error, {}, "", ""};
+  TaskResult c{"A9.3", "all good", 50.0, false, 0.0, Status::Error, {}, "", ""};
   c.tests = {test("A9.3", Status::Passed, 1.0)};
   r.tasks = {a, b, c};
   finalizeScores(r);

@@ -53,6 +53,7 @@ struct TaskResult {
   std::string id;     // "A2.4"
   std::string title;  // "Blinn-Phong shading"
   double points = 0.0;  // maximum
+  bool optional = false;  // extra credit: not part of GradeResult::maxScore
   double score = 0.0;   // points * (weight of the passed tests / weight of all tests)
   Status status = Status::Error;  // Passed only if every test passed; NotImplemented if any test found the stub
   std::vector<TestResult> tests;

@@ -171,6 +171,7 @@ class Grader {
       task.id = t.id;
       task.title = t.title;
       task.points = t.points;
+      task.optional = t.optional;
       task.file = "assignments/" + fs::path(spec_.folder()).filename().string() + "/" + t.file;
       task.functions = joinNames(t.functions);
       const std::string blocked = whyNotGradable(t);

@@ -62,12 +62,14 @@ GradingSpec loadGradingSpec(const std::string& path, const std::string& dataDir)
   for (size_t i = 0; i < tasks.size(); ++i) {
     const JsonNode task = tasks.at(i);
     task.requireObject();
-    task.allowOnly({"id", "title", "points", "file", "functions", "recursive", "forbidden", "uses", "tests"});
+    task.allowOnly({"id", "title", "points", "file", "functions", "recursive", "forbidden", "uses", "tests",
+                    "optional"});
     TaskSpec t;
     t.id = task.string("id");
     if (t.id.rfind(spec.assignment + ".", 0) != 0) task.child("id").fail("task IDs start with '" + spec.assignment + ".'");
     t.title = task.string("title");
     t.points = task.number("points", 0.0f, 1000.0f);
+    t.optional = task.boolean("optional", false);
     t.file = task.string("file");
     t.functions = strings(task.child("functions"), "functions");
     if (task.has("forbidden")) t.forbidden = strings(task.child("forbidden"), "forbidden");

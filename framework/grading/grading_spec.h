@@ -2,7 +2,8 @@
 // tasks (ID, title, points, the file and functions the student writes,
 // "recursive" for a task that calls itself through the framework,
 // "forbidden": names the task's file must not use, "uses": the other tasks
-// its tests run, by their references) and, per task, the tests
+// its tests run, by their references, "optional": true for extra credit,
+// whose points are not part of the maximum) and, per task, the tests
 // that grade it:
 //
 //   {"kind": "unit"}                           the task's tests in lightlab_task_tests: every case
@@ -44,6 +45,7 @@ struct TaskSpec {
   std::string id;     // "A2.4"
   std::string title;
   double points = 0.0;
+  bool optional = false;               // extra credit: its points are earned on top of the maximum
   std::string file;                    // the student's file, relative to the spec's folder
   std::vector<std::string> functions;  // what it defines (in ll::aN)
   std::vector<std::string> forbidden;  // names the file must not use (e.g. glm::lookAt for A1.1)

@@ -43,6 +43,13 @@ int drawStructure(ImDrawList* dl, const Camera& camera, const std::vector<NodeSh
         dl->AddCircle(c, std::hypot(edge.x - c.x, edge.y - c.y), colour, 32, 1.0f);
       continue;
     }
+    if (!n.edges.empty()) {
+      for (const auto& [from, to] : n.edges) {
+        ImVec2 a, b;
+        if (toScreen(from, a) && toScreen(to, b)) dl->AddLine(a, b, colour, 1.0f);
+      }
+      continue;
+    }
     ImVec2 corner[8];
     bool ok[8];
     for (int k = 0; k < 8; ++k)

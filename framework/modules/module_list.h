@@ -18,7 +18,9 @@
 #define LIGHTLAB_ACCELERATORS(X) \
   X(bruteForceAccelerator)       \
   X(bvhAccelerator)              \
+  X(wideBvhAccelerator)          \
   X(kdtreeAccelerator)           \
+  X(bspAccelerator)              \
   X(octreeAccelerator)           \
   LIGHTLAB_EMBREE_ACCELERATOR(X)
 

@@ -5,7 +5,7 @@
 // the shared edges and vertex of a fan (never a miss, never a second hit past
 // the sheet); rays through a closed mesh's edges (exactly two crossings).
 // Each case runs on every accelerator of everyAccelerator() -- all of them in
-// tests/numerics, one (OnlyAccelerator) in the graded hard cases of A4.2-A4.4.
+// tests/numerics, one (OnlyAccelerator) in the graded hard cases of A4.2-A4.5.
 #pragma once
 
 #include <cmath>

@@ -1,0 +1,381 @@
+// The sweep KD-tree build (framework code; the default): Wald and Havran,
+// "On building fast kd-trees for ray tracing, and on doing that in
+// O(N log N)", IEEE Symposium on Interactive Ray Tracing 2006.
+//
+// Every face of every primitive's box is a candidate plane. Each node keeps,
+// per axis, its boxes' faces as events sorted by position (an end before a
+// planar box before a start at one position), sorted once at the root. One
+// sweep per axis then counts the boxes below and above every candidate and
+// prices it by the surface area heuristic in O(1). Splitting a node keeps
+// the order: the events of boxes on one side are filtered into that child in
+// sequence; only the straddling triangles, clipped to each child's cell
+// ("perfect splits"), get new events, sorted on their own and merged in. So
+// every node costs O(n) and the tree O(n log n), with no sorting below the
+// root but of the straddlers.
+//
+// The termination rules, the clipping and the statistics are the binned
+// build's (kdtree_binned_build.cpp). Two things differ: the candidates, and
+// where a box lying in the plane goes: to the cheaper side (Wald and Havran's
+// p_side), where the binned build always sends it above.
+// Large nodes build their two subtrees in parallel (oneTBB), each into its
+// own node array, spliced together after.
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <bit>
+#include <string>
+#include <utility>
+
+#include <tbb/parallel_invoke.h>
+
+#include "core/phase_progress.h"
+#include "kdtree.h"
+#include "kdtree_build_support.h"
+
+namespace ll::a4::kdbuild {
+
+namespace {
+
+// An event, 8 bytes ordered as one integer: the position's bits made
+// sortable (high 32 bits), the kind (2 bits), the primitive's index among the
+// node's (30 bits). Positions compare as floats do (-0 is stored as +0).
+using Event = uint64_t;
+enum EventKind : uint32_t { kEnd = 0, kPlanar = 1, kStart = 2 };
+constexpr uint32_t kIndexBits = 30;
+constexpr uint32_t kIndexMask = (1u << kIndexBits) - 1u;
+
+uint32_t sortableBits(float x) {
+  const uint32_t u = std::bit_cast<uint32_t>(x + 0.0f);  // -0 + 0 = +0
+  return (u & 0x80000000u) != 0 ? ~u : u | 0x80000000u;
+}
+float positionOf(uint32_t key) { return std::bit_cast<float>((key & 0x80000000u) != 0 ? key & 0x7FFFFFFFu : ~key); }
+Event makeEvent(float position, EventKind kind, uint32_t index) {
+  return (static_cast<uint64_t>(sortableBits(position)) << 32) | (static_cast<uint64_t>(kind) << kIndexBits) | index;
+}
+uint32_t positionKey(Event e) { return static_cast<uint32_t>(e >> 32); }
+uint32_t kindOf(Event e) { return static_cast<uint32_t>(e >> kIndexBits) & 3u; }
+uint32_t indexOf(Event e) { return static_cast<uint32_t>(e) & kIndexMask; }
+Event withIndex(Event e, uint32_t index) { return (e & ~static_cast<uint64_t>(kIndexMask)) | index; }
+
+using EventLists = std::array<std::vector<Event>, 3>;  // by axis
+
+void addEvents(const Bounds3& b, uint32_t index, EventLists& events) {
+  for (int a = 0; a < 3; ++a) {
+    auto& list = events[static_cast<size_t>(a)];
+    if (b.min[a] == b.max[a]) {
+      list.push_back(makeEvent(b.min[a], kPlanar, index));
+    } else {
+      list.push_back(makeEvent(b.min[a], kStart, index));
+      list.push_back(makeEvent(b.max[a], kEnd, index));
+    }
+  }
+}
+
+// Sorts events by position and kind (the high 34 bits; the index order of
+// equal keys does not matter): three passes of an LSD radix sort.
+void radixSort(std::vector<Event>& events, std::vector<Event>& scratch) {
+  scratch.resize(events.size());
+  constexpr std::array<uint32_t, 3> kShift{30, 41, 52}, kBits{11, 11, 12};
+  std::vector<uint32_t> count;
+  for (size_t pass = 0; pass < 3; ++pass) {
+    const uint32_t shift = kShift[pass], mask = (1u << kBits[pass]) - 1u;
+    count.assign(size_t{mask} + 2, 0u);
+    for (const Event e : events) ++count[((e >> shift) & mask) + 1];
+    for (size_t d = 1; d < count.size(); ++d) count[d] += count[d - 1];
+    for (const Event e : events) scratch[count[(e >> shift) & mask]++] = e;
+    events.swap(scratch);
+  }
+}
+
+// One node's input: its primitives (boxes clipped to its cell) and their events.
+struct NodeData {
+  std::vector<KdPrim> prims;
+  EventLists events;
+  void clear() {
+    prims.clear();
+    for (auto& e : events) e.clear();
+  }
+};
+
+struct Plane {
+  int axis = -1;  // -1: no plane found
+  float position = 0.0f;
+  float cost = kInfinity;
+  bool planarBelow = false;  // boxes lying in the plane go below (else above)
+};
+
+// Shared by the builders of one tree (the parallel subtrees'), read-only but the counter.
+struct Shared {
+  const KdSettings& settings;
+  int maxDepth;
+  float pad;
+  const std::vector<LeafTriangle>& triangles;  // by primitive id
+  uint32_t triangleCount;
+  const PhaseSink* sink;  // the calling thread's progress sink (thread-safe), or null
+  std::atomic<size_t> nodes{0};
+};
+
+// Nodes with at least this many primitives build their subtrees in parallel.
+constexpr size_t kParallelPrimitives = 8192;
+
+class Builder {
+ public:
+  explicit Builder(Shared& shared) : sh_(shared), s_(shared.settings), scratch_(kKdMaxDepth + 2) {}
+
+  // The input of a subtree's root at `depth`, to fill before build().
+  NodeData& input(int depth) { return scratch_[static_cast<size_t>(depth)][0]; }
+
+  // Appends the subtree of `cell` over `in` to nodes_ and slots_. depth:
+  // edges from the root; splits: of those, the ones that left primitives on
+  // both sides (empty-space cuts do not count against maxDepth).
+  void build(NodeData& in, const Bounds3& cell, int depth, int splits, int badRefines) {
+    const auto index = static_cast<uint32_t>(nodes_.size());
+    nodes_.emplace_back();
+    // Nodes made by every builder of the tree, counted in batches (one shared counter per node would
+    // bounce its cache line between the threads); reported, which is also where a GUI pane's newer
+    // request cancels the build (its phase report throws).
+    if ((++unreported_ & 0x3FFF) == 0 || in.prims.size() > 50000) {
+      const size_t made = sh_.nodes.fetch_add(unreported_, std::memory_order_relaxed) + unreported_;
+      unreported_ = 0;
+      if (sh_.sink) (*sh_.sink)("kd-tree build (" + std::to_string(made) + " nodes)", -1.0);
+    }
+    const size_t made = sh_.nodes.load(std::memory_order_relaxed) + nodes_.size();
+    depth_ = std::max(depth_, depth);
+    const size_t n = in.prims.size();
+    const double area = halfArea(cell);
+    if (n == 0 || splits >= sh_.maxDepth || depth >= kKdMaxDepth || made + 2 > kKdMaxNodes)
+      return makeLeaf(index, in.prims, area);
+    const bool few = n <= static_cast<size_t>(s_.maxLeaf);
+    const Plane plane = bestPlane(in, cell, few);
+    const float leafCost = s_.intersectionCost * static_cast<float>(n);
+    if (plane.axis < 0 || (few && plane.cost >= leafCost)) return makeLeaf(index, in.prims, area);
+    if (plane.cost >= leafCost) ++badRefines;  // PBRT: allow a few uphill splits to get out of local minima
+    if ((plane.cost > 4.0f * leafCost && n < 16) || badRefines >= 3) return makeLeaf(index, in.prims, area);
+
+    const int a = plane.axis;
+    Bounds3 cellBelow = cell, cellAbove = cell;
+    cellBelow.max[a] = plane.position;
+    cellAbove.min[a] = plane.position;
+    auto& children = scratch_[static_cast<size_t>(depth + 1)];
+    split(in, a, plane.position, plane.planarBelow, cellBelow, cellAbove, children[0], children[1]);
+    if (n >= kParallelPrimitives) in = NodeData{};  // a big node's buffers are not worth keeping for reuse
+    sah_ += static_cast<double>(s_.traversalCost) * area;
+    const bool belowEmpty = children[0].prims.empty(), aboveEmpty = children[1].prims.empty();
+    const int nextSplits = splits + (belowEmpty || aboveEmpty ? 0 : 1);
+
+    if (n >= kParallelPrimitives && !belowEmpty && !aboveEmpty) {
+      Builder below(sh_), above(sh_);
+      std::swap(below.input(depth + 1), children[0]);
+      std::swap(above.input(depth + 1), children[1]);
+      tbb::parallel_invoke(
+          [&] { below.build(below.input(depth + 1), cellBelow, depth + 1, nextSplits, badRefines); },
+          [&] { above.build(above.input(depth + 1), cellAbove, depth + 1, nextSplits, badRefines); });
+      splice(below);
+      nodes_[index] = KdNode::interior(a, plane.position, static_cast<uint32_t>(nodes_.size()), false, false);
+      splice(above);
+      return;
+    }
+    build(children[0], cellBelow, depth + 1, nextSplits, badRefines);
+    nodes_[index] = KdNode::interior(a, plane.position, static_cast<uint32_t>(nodes_.size()), belowEmpty, aboveEmpty);
+    build(children[1], cellAbove, depth + 1, nextSplits, badRefines);
+  }
+
+  std::vector<KdNode> nodes_;     // subtree in depth-first order; aboveChild indices within it
+  std::vector<uint32_t> slots_;   // leaf slots; leaves' first slot within it
+  int depth_ = 0;
+  double sah_ = 0.0;
+
+ private:
+  // The cheapest candidate over the three axes. emptyOnly: only planes with
+  // no primitive on one side, priced without the empty bonus (the true SAH
+  // cost, to compare with a leaf's).
+  Plane bestPlane(const NodeData& in, const Bounds3& cell, bool emptyOnly) const {
+    Plane best;
+    const float emptySideFactor = emptyOnly ? 1.0f : 1.0f - s_.emptyBonus;
+    const auto n = static_cast<uint32_t>(in.prims.size());
+    const float invArea = 1.0f / halfArea(cell);
+    const Vec3 extent = cell.max - cell.min;
+    for (int a = 0; a < 3; ++a) {
+      const float lo = cell.min[a], hi = cell.max[a];
+      if (!(hi > lo)) continue;
+      // The cell's half area is e1 e2 + length (e1 + e2) for the other axes' extents e1, e2.
+      const float e1 = extent[(a + 1) % 3], e2 = extent[(a + 2) % 3];
+      const float cap = e1 * e2, rim = e1 + e2;
+      // Below a candidate: boxes starting below it; above: boxes ending above it or lying in it.
+      uint32_t nBelow = 0, nAbove = n;
+      const auto consider = [&](float position, uint32_t nB, uint32_t nA, bool planarBelow) {
+        const bool oneSided = nB == 0 || nA == 0;
+        if (emptyOnly && !oneSided) return;
+        const float areaBelow = cap + (position - lo) * rim, areaAbove = cap + (hi - position) * rim;
+        const float cost = s_.traversalCost + (oneSided ? emptySideFactor : 1.0f) * s_.intersectionCost * invArea *
+                                                  (areaBelow * static_cast<float>(nB) + areaAbove * static_cast<float>(nA));
+        if (cost < best.cost) best = {a, position, cost, planarBelow};
+      };
+      // Between two event positions the counts are constant and the cost is linear: its minimum is at an
+      // event, unless it falls on the cell's face (no plane there). The gaps also offer the binned
+      // build's planes (bin boundaries), so the sweep's choice is never worse than the binned build's at
+      // a node, and breaks its ties the same way (a flat gap's lowest plane, not a box's face, which
+      // keeps trees as cheap overall). Linear: only the first and last boundary in a gap can be its
+      // cheapest, so this costs O(1) per gap. A gap reaching the cell's face offers its middle too (the
+      // Cornell box's walls all lie in its faces: the middle of the box separates them).
+      const int bins = std::clamp(s_.bins, 2, 64);
+      const float binWidth = (hi - lo) / static_cast<float>(bins);
+      const auto boundary = [&](int b) { return lo + (hi - lo) * (static_cast<float>(b) / static_cast<float>(bins)); };
+      const auto considerGap = [&](float from, float to) {
+        from = std::max(from, lo);
+        to = std::min(to, hi);
+        if (!(from < to)) return;
+        int first = std::clamp(static_cast<int>((from - lo) / binWidth), 0, bins) + 1;
+        while (first > 1 && boundary(first - 1) > from) --first;
+        while (first < bins && !(boundary(first) > from)) ++first;
+        int last = std::clamp(static_cast<int>((to - lo) / binWidth), 0, bins);
+        while (last < bins - 1 && boundary(last + 1) < to) ++last;
+        while (last > 0 && !(boundary(last) < to)) --last;
+        if (first < bins && last > 0 && first <= last) {
+          consider(boundary(first), nBelow, nAbove, false);
+          if (last != first) consider(boundary(last), nBelow, nAbove, false);
+        }
+        const float middle = 0.5f * (from + to);
+        if ((from == lo || to == hi) && middle > lo && middle < hi) consider(middle, nBelow, nAbove, false);
+      };
+      const std::vector<Event>& events = in.events[static_cast<size_t>(a)];
+      float previous = -kInfinity;
+      for (size_t i = 0; i < events.size();) {
+        const uint32_t key = positionKey(events[i]);
+        const float position = positionOf(key);
+        considerGap(previous, position);
+        uint32_t count[3] = {0, 0, 0};
+        for (; i < events.size() && positionKey(events[i]) == key; ++i) ++count[kindOf(events[i])];
+        nAbove -= count[kEnd];
+        if (position > lo && position < hi) {
+          // Boxes lying in the plane go to the cheaper side (Wald and Havran's p_side).
+          const uint32_t planar = count[kPlanar];
+          consider(position, nBelow, nAbove, false);
+          if (planar > 0) consider(position, nBelow + planar, nAbove - planar, true);
+        }
+        nBelow += count[kStart] + count[kPlanar];
+        nAbove -= count[kPlanar];
+        previous = position;
+      }
+      considerGap(previous, kInfinity);
+    }
+    return best;
+  }
+
+  // Splits `in` at (axis a, position) into `below` and `above`: boxes
+  // starting below go below, boxes ending above go above, boxes lying in the
+  // plane to the side planarBelow says (either holds them: cells are closed);
+  // straddling triangles are clipped to each cell.
+  void split(NodeData& in, int a, float position, bool planarBelow, const Bounds3& cellBelow,
+             const Bounds3& cellAbove, NodeData& below, NodeData& above) {
+    below.clear();
+    above.clear();
+    const size_t n = in.prims.size();
+    side_.resize(n);
+    newIndex_.resize(n);
+    for (auto& side : straddlers_)
+      for (auto& list : side) list.clear();
+    for (size_t i = 0; i < n; ++i) {
+      const KdPrim& p = in.prims[i];
+      const bool inPlane = p.box.min[a] == position && p.box.max[a] == position;
+      const bool toBelow = p.box.min[a] < position || (inPlane && planarBelow);
+      const bool toAbove = p.box.max[a] > position || (inPlane && !planarBelow);
+      if (toBelow && toAbove) {
+        side_[i] = 2;
+        Bounds3 b = p.box, t = p.box;
+        if (p.prim < sh_.triangleCount) {
+          const LeafTriangle& tri = sh_.triangles[p.prim];
+          b = clippedBox(p, tri.p0, tri.p1, tri.p2, cellBelow, sh_.pad);
+          t = clippedBox(p, tri.p0, tri.p1, tri.p2, cellAbove, sh_.pad);
+        } else {  // another kind of primitive: its box cut at the plane
+          b.max[a] = position;
+          t.min[a] = position;
+        }
+        if (!b.empty()) addStraddler(below, {b, p.prim}, straddlers_[0]);
+        if (!t.empty()) addStraddler(above, {t, p.prim}, straddlers_[1]);
+      } else {
+        NodeData& to = toBelow ? below : above;
+        side_[i] = toBelow ? 0 : 1;
+        newIndex_[i] = static_cast<uint32_t>(to.prims.size());
+        to.prims.push_back(p);
+      }
+    }
+    // Events of one-sided boxes keep their order (indices renumbered in order); the straddlers' are merged in.
+    for (size_t k = 0; k < 3; ++k) {
+      for (const Event e : in.events[k]) {
+        const uint32_t i = indexOf(e);
+        if (side_[i] == 2) continue;
+        (side_[i] == 0 ? below : above).events[k].push_back(withIndex(e, newIndex_[i]));
+      }
+      mergeStraddlers(below.events[k], straddlers_[0][k]);
+      mergeStraddlers(above.events[k], straddlers_[1][k]);
+    }
+  }
+
+  static void addStraddler(NodeData& to, const KdPrim& p, EventLists& events) {
+    addEvents(p.box, static_cast<uint32_t>(to.prims.size()), events);
+    to.prims.push_back(p);
+  }
+
+  void mergeStraddlers(std::vector<Event>& events, std::vector<Event>& added) {
+    if (added.empty()) return;
+    std::sort(added.begin(), added.end());
+    merged_.resize(events.size() + added.size());
+    std::merge(events.begin(), events.end(), added.begin(), added.end(), merged_.begin());
+    events.swap(merged_);
+  }
+
+  void makeLeaf(uint32_t index, const std::vector<KdPrim>& prims, double area) {
+    nodes_[index] = KdNode::leafNode(static_cast<uint32_t>(slots_.size()), static_cast<uint32_t>(prims.size()));
+    for (const KdPrim& p : prims) slots_.push_back(p.prim);
+    sah_ += static_cast<double>(s_.intersectionCost) * static_cast<double>(prims.size()) * area;
+  }
+
+  // Appends a subtree built by another builder, its indices moved to where it lands.
+  void splice(const Builder& sub) {
+    const auto nodeOffset = static_cast<uint32_t>(nodes_.size()), slotOffset = static_cast<uint32_t>(slots_.size());
+    for (const KdNode& node : sub.nodes_) {
+      if (node.isLeaf())
+        nodes_.push_back(KdNode::leafNode(node.first() + slotOffset, node.count()));
+      else
+        nodes_.push_back(KdNode::interior(node.axis(), node.split(), node.aboveChild() + nodeOffset, node.belowEmpty(),
+                                          node.aboveEmpty()));
+    }
+    slots_.insert(slots_.end(), sub.slots_.begin(), sub.slots_.end());
+    depth_ = std::max(depth_, sub.depth_);
+    sah_ += sub.sah_;
+  }
+
+  Shared& sh_;
+  const KdSettings& s_;
+  std::vector<std::array<NodeData, 2>> scratch_;  // by depth: the two children made there (reused)
+  std::vector<uint8_t> side_;                      // split(): 0 below, 1 above, 2 both
+  std::vector<uint32_t> newIndex_;                 // split(): index in the child of a one-sided box
+  std::array<EventLists, 2> straddlers_;           // split(): new events of clipped boxes, below and above
+  std::vector<Event> merged_;
+  size_t unreported_ = 0;  // nodes made since the last report
+};
+
+}  // namespace
+
+BuildTotals buildSweep(KdTree& tree, std::vector<KdPrim> prims, const KdSettings& s, int maxDepth, float pad) {
+  Shared shared{s, maxDepth, pad, tree.triangles, tree.triangleCount, currentPhaseSink()};
+  Builder builder(shared);
+  NodeData& root = builder.input(0);
+  const auto n = static_cast<uint32_t>(prims.size());
+  for (auto& list : root.events) list.reserve(2 * size_t{n});
+  for (uint32_t i = 0; i < n; ++i) addEvents(prims[i].box, i, root.events);
+  root.prims = std::move(prims);
+  {
+    std::array<std::vector<Event>, 3> scratch;
+    tbb::parallel_invoke([&] { radixSort(root.events[0], scratch[0]); },
+                         [&] { radixSort(root.events[1], scratch[1]); },
+                         [&] { radixSort(root.events[2], scratch[2]); });
+  }
+  builder.build(root, tree.bounds, 0, 0, 0);
+  tree.nodes = std::move(builder.nodes_);
+  tree.primIds = std::move(builder.slots_);
+  return {builder.depth_, builder.sah_};
+}
+
+}  // namespace ll::a4::kdbuild

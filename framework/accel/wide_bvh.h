@@ -1,0 +1,98 @@
+// Accelerator `bvh4`: a 4-wide bounding volume hierarchy traversed with SSE,
+// the framework's fast path ("how production tracers do it"). The binary
+// `bvh` stays assignment 4's structure; this one is framework code and never
+// runs student code.
+//
+// Build: binned SAH (Wald, "On fast Construction of SAH-based Bounding Volume
+// Hierarchies", 2007) over primitive centroids, big subtrees in parallel
+// (oneTBB). The binary SAH tree is collapsed into 4-wide nodes while it is
+// built: a node's children start as its whole range, and the child with the
+// largest surface area is split again until there are four -- pulling up the
+// grandchildren of the binary tree greedily by area, as in Wald, Benthin and
+// Boulos, "Getting Rid of Packets", RT 2008 (Embree's builder) and Dammertz,
+// Hanika and Keller, "Shallow Bounding Volume Hierarchies for Fast SIMD Ray
+// Tracing of Incoherent Rays", EGSR 2008.
+//
+// Query: the four child boxes of a node are tested at once (SSE, x86-64's
+// baseline: no AVX needed), the children hit are visited nearest first, and
+// leaves test primitives with the framework's own watertight triangle test and
+// sphere test, so hits are bit-identical to brute force (`none`): the same t
+// and, on equal t, the same (smallest) primitive id.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "accel/accelerator.h"
+#include "core/math.h"
+#include "scene/geometry.h"
+
+namespace ll {
+
+// One node: the boxes of up to four children as structure-of-arrays rows
+// (box[side][axis][child], side 0 = min corner, 1 = max corner; world space),
+// so one SSE instruction handles one plane of all four boxes. 128 bytes, two
+// cache lines. An unused child slot has an empty box (min +inf, max -inf),
+// which no ray enters, and child == kEmpty.
+struct alignas(64) WideBvhNode {
+  static constexpr uint32_t kEmpty = 0xffffffffu;
+  float box[2][3][4];
+  uint32_t child[4];  // count == 0: index of an interior node; count > 0: first leaf slot
+  uint32_t count[4];  // primitives of a leaf child, in slots [child, child + count); 0 = not a leaf
+  bool used(int i) const { return child[i] != kEmpty; }
+  bool isLeaf(int i) const { return count[i] > 0; }
+  Bounds3 childBounds(int i) const {
+    Bounds3 b;
+    b.min = Vec3(box[0][0][i], box[0][1][i], box[0][2][i]);
+    b.max = Vec3(box[1][0][i], box[1][1][i], box[1][2][i]);
+    return b;
+  }
+};
+static_assert(sizeof(WideBvhNode) == 128, "a 4-wide node fills two cache lines");
+
+// One leaf slot: the primitive's id and, for a triangle, its vertices (world
+// space: the very floats of the Geometry, so the triangle test gives the same
+// t as brute force), side by side so a leaf is one contiguous run of memory.
+struct WideBvhLeafPrim {
+  Vec3 p0, p1, p2;  // unused for other primitives than triangles
+  uint32_t prim;    // id in the Geometry
+};
+
+struct WideBvhSettings {
+  int maxLeaf = 4;  // most primitives in one leaf (1..16); smaller leaves are made when the SAH says so
+  int bins = 16;    // SAH bins per axis (2..64)
+};
+
+// Deepest path of binary splits the build makes (forced halving beyond
+// kWideBvhMaxDepth - 32 splits): a 4-wide tree is never deeper.
+constexpr int kWideBvhMaxDepth = 96;
+
+// The built structure. Every primitive sits in exactly one leaf slot; a
+// leaf's slots are contiguous, and slots follow the tree's depth-first order.
+struct WideBvh {
+  const Geometry* geometry = nullptr;
+  std::vector<WideBvhNode> nodes;          // nodes[0] is the root (depth-first order); empty: no primitives
+  std::vector<WideBvhLeafPrim> prims;      // leaf slot -> primitive (id, and vertices if a triangle)
+  uint32_t triangleCount = 0;              // primitive ids below this are triangles
+  Vec3 sceneCentre{0.0f};                  // a sphere around every primitive (world space), for rounding bounds
+  float sceneRadius = 0.0f;
+  int depth = 0;         // edges on the longest root-to-leaf path (a leaf child of the root: 1)
+  double sahCost = 0.0;  // expected cost per ray: one unit per 4-wide node visited and per primitive tested
+  size_t memoryBytes() const {
+    return nodes.capacity() * sizeof(WideBvhNode) + prims.capacity() * sizeof(WideBvhLeafPrim);
+  }
+};
+
+// Builds over `geometry`, which must outlive the result.
+WideBvh buildWideBvh(const Geometry& geometry, const WideBvhSettings& settings);
+
+// Closest hit with ray.tmin < t < ray.tmax, exactly as brute force finds it.
+// Counters: one node per 4-wide node visited, one per primitive tested.
+bool intersectWideBvh(const WideBvh& bvh, const Ray& ray, Hit& hit, QueryCounters& counters);
+// Whether anything is hit with ray.tmin < t < ray.tmax; stops at the first hit.
+bool occludedWideBvh(const WideBvh& bvh, const Ray& ray, QueryCounters& counters);
+
+// The registration (framework/modules/module_list.h).
+AcceleratorInfo wideBvhAccelerator();
+
+}  // namespace ll
