@@ -59,6 +59,12 @@ Event withIndex(Event e, uint32_t index) { return (e & ~static_cast<uint64_t>(kI
 
 using EventLists = std::array<std::vector<Event>, 3>;  // by axis
 
+// floor(x) in [0, bins], clamped as a float before the conversion: x is beyond int's range for far
+// boxes, and NaN (0 * infinity) in a cell thinner than float resolution; NaN gives 0.
+int binIndex(float x, int bins) {
+  return x > 0.0f ? static_cast<int>(std::min(x, static_cast<float>(bins))) : 0;
+}
+
 void addEvents(const Bounds3& b, uint32_t index, EventLists& events) {
   for (int a = 0; a < 3; ++a) {
     auto& list = events[static_cast<size_t>(a)];
@@ -219,16 +225,16 @@ class Builder {
       // cheapest, so this costs O(1) per gap. A gap reaching the cell's face offers its middle too (the
       // Cornell box's walls all lie in its faces: the middle of the box separates them).
       const int bins = std::clamp(s_.bins, 2, 64);
-      const float binWidth = (hi - lo) / static_cast<float>(bins);
+      const float binsPerLength = static_cast<float>(bins) / (hi - lo);
       const auto boundary = [&](int b) { return lo + (hi - lo) * (static_cast<float>(b) / static_cast<float>(bins)); };
       const auto considerGap = [&](float from, float to) {
         from = std::max(from, lo);
         to = std::min(to, hi);
         if (!(from < to)) return;
-        int first = std::clamp(static_cast<int>((from - lo) / binWidth), 0, bins) + 1;
+        int first = binIndex((from - lo) * binsPerLength, bins) + 1;
         while (first > 1 && boundary(first - 1) > from) --first;
         while (first < bins && !(boundary(first) > from)) ++first;
-        int last = std::clamp(static_cast<int>((to - lo) / binWidth), 0, bins);
+        int last = binIndex((to - lo) * binsPerLength, bins);
         while (last < bins - 1 && boundary(last + 1) < to) ++last;
         while (last > 0 && !(boundary(last) < to)) --last;
         if (first < bins && last > 0 && first <= last) {

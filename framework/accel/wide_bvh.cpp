@@ -6,7 +6,6 @@
 #include <xmmintrin.h>  // SSE: the four-box slab test
 
 #include <algorithm>
-#include <cstdlib>  // TEMP
 #include <atomic>
 #include <bit>
 #include <cmath>
@@ -28,6 +27,8 @@ namespace {
 
 constexpr int kMaxBins = 64;
 constexpr uint32_t kParallelPrims = 4096;  // ranges at least this big build their children in parallel
+// SAH cost of visiting a 4-wide node, in primitive tests (1 to 3 measured alike on the Cornell box).
+constexpr float kNodeCost = 1.0f;
 // Beyond this many binary splits every split halves its range, so no path gets deeper than kWideBvhMaxDepth.
 constexpr int kForcedHalvingDepth = kWideBvhMaxDepth - 32;
 
@@ -82,7 +83,8 @@ struct Binning {
   __m128 lastBin = _mm_setzero_ps();
   int bins = 1;
   Binning() = default;
-  Binning(const Box& centroids, int binCount) : origin(centroids.lo), lastBin(_mm_set1_ps(float(binCount - 1))), bins(binCount) {
+  Binning(const Box& centroids, int binCount)
+      : origin(centroids.lo), lastBin(_mm_set1_ps(float(binCount - 1))), bins(binCount) {
     alignas(16) float e[4], s[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     _mm_store_ps(e, _mm_sub_ps(centroids.hi, centroids.lo));
     for (int a = 0; a < 3; ++a)
@@ -167,7 +169,8 @@ class Builder {
     const uint32_t index = next_.fetch_add(1, std::memory_order_relaxed);
     WideBvhNode& node = nodes_[index];
     for (int i = 0; i < 4; ++i) {
-      alignas(16) float lo[4] = {kInfinity, kInfinity, kInfinity, 0.0f}, hi[4] = {-kInfinity, -kInfinity, -kInfinity, 0.0f};
+      alignas(16) float lo[4] = {kInfinity, kInfinity, kInfinity, 0.0f};
+      alignas(16) float hi[4] = {-kInfinity, -kInfinity, -kInfinity, 0.0f};
       node.child[i] = WideBvhNode::kEmpty;
       node.count[i] = 0;
       if (i < n) {
@@ -206,21 +209,20 @@ class Builder {
     if (n < 2 || r.depth >= kForcedHalvingDepth) return;  // (then: halving, see split())
     r.split = bestSplit(r);
     if (r.split.axis < 0) return;
-    // Small enough for a leaf: split only where the SAH (primitive test cost 1) says it pays -- in a
-    // free slot of the node being built at no traversal cost, else as a node of its own.
+    // Small enough for a leaf: split only where the SAH (cost per primitive tested: 1) says it pays --
+    // in a free child slot of the node being built at no traversal cost, else as a node of its own.
     const float area = r.bounds.halfArea();
-    static const float kCt = std::getenv("WB_CT") ? std::strtof(std::getenv("WB_CT"), nullptr) : 1.0f;  // TEMP
-    static const float kFree = std::getenv("WB_FREE") ? std::strtof(std::getenv("WB_FREE"), nullptr) : 0.0f;  // TEMP
-    r.splitsFreely = r.splits || (area > 0.0f && kFree + r.split.cost / area < static_cast<float>(n));
+    r.splitsFreely = r.splits || (area > 0.0f && r.split.cost / area < static_cast<float>(n));
     if (r.splits) return;
-    r.splits = area > 0.0f && kCt + r.split.cost / area < static_cast<float>(n);
+    r.splits = area > 0.0f && kNodeCost + r.split.cost / area < static_cast<float>(n);
   }
 
   // Binned SAH over all three axes, one pass over the primitives.
   Split bestSplit(const Range& r) const {
     const uint32_t n = r.count();
     // Small ranges need fewer bins: n primitives fill at most n of them.
-    const int bins = std::clamp(std::min(settings_.bins, static_cast<int>(std::min<uint32_t>(n, kMaxBins)) + 2), 2, kMaxBins);
+    const int fill = static_cast<int>(std::min<uint32_t>(n, kMaxBins)) + 2;
+    const int bins = std::clamp(std::min(settings_.bins, fill), 2, kMaxBins);
     Split s;
     s.binning = Binning(r.centroids, bins);
     // Per axis and bin: box corners and primitive count (only bins [0, bins) are initialised and used).
@@ -261,7 +263,8 @@ class Builder {
         acc.extend(binLo[a][i - 1], binHi[a][i - 1]);
         m += count[a][i - 1];
         if (m == 0 || rightCount[i] == 0) continue;
-        const float cost = acc.halfArea() * static_cast<float>(m) + rightArea[i] * static_cast<float>(rightCount[i]);
+        const float cost =
+            acc.halfArea() * static_cast<float>(m) + rightArea[i] * static_cast<float>(rightCount[i]);
         if (cost < s.cost) {
           s.cost = cost;
           s.axis = a;
@@ -363,12 +366,13 @@ struct WideRay {
   __m128 ox, oy, oz;  // origin, broadcast
   __m128 ix, iy, iz;  // 1/dir, broadcast; +-infinity for zero components
   __m128 tmin;        // ray.tmin, broadcast
+  __m128 scale;       // kRobustScale, broadcast
   __m128 slack;       // tSlack, broadcast
-  int nearX, nearY, nearZ;  // box side of the slab's near plane: 1 (max) where dir < 0 (or -0)
+  int sideX, sideY, sideZ;  // box side of the slab's near plane: 1 (max) where dir < 0 (or -0)
   // The triangle test's t and a box's plane distances round differently, by up to a few ulps of the
   // distances from the origin to the geometry (not of t): a box is skipped only when it lies clearly
-  // outside [tmin, tLimit] (as in assignments/a4_acceleration/bvh_ray_tests.h, there with |o - c| and
-  // 1/|dir|; here with their upper bounds |o - c|_1 and 1/max|dir_i| = |wray.sz|: no square root).
+  // outside [tmin, tLimit], by tSlack. As in assignments/a4_acceleration/bvh_ray_tests.h, there with
+  // |o - c| and 1/|dir|; here with their upper bounds |o - c|_1 and 1/max|dir_i| = |wray.sz|.
   float tSlack;
   WideRay(const Ray& r, const WideBvh& bvh) : ray(r), wray(r) {
     alignas(16) float inv[4];
@@ -379,29 +383,32 @@ struct WideRay {
     ix = _mm_set1_ps(inv[0]);
     iy = _mm_set1_ps(inv[1]);
     iz = _mm_set1_ps(inv[2]);
-    nearX = inv[0] < 0.0f;
-    nearY = inv[1] < 0.0f;
-    nearZ = inv[2] < 0.0f;
+    sideX = inv[0] < 0.0f;
+    sideY = inv[1] < 0.0f;
+    sideZ = inv[2] < 0.0f;
     const Vec3 oc = glm::abs(r.origin - bvh.sceneCentre);
     tSlack = kSlackUlps * std::numeric_limits<float>::epsilon() * (oc.x + oc.y + oc.z + bvh.sceneRadius) *
              std::abs(wray.sz);
     tmin = _mm_set1_ps(r.tmin);
+    scale = _mm_set1_ps(kRobustScale);
     slack = _mm_set1_ps(tSlack);
   }
+  // Beyond this a box cannot hold a hit at distance t.
   float cullLimit(float t) const { return t + tSlack; }
 };
 
 // The children of `node` whose boxes the ray meets within [ray.tmin, tLimit], up to rounding (a bit
-// mask), and where it enters each (tEntry). Axis-parallel rays are exact: a plane distance 0 * inf
-// is NaN, and _mm_max_ps(a, b) / _mm_min_ps(a, b) return b when a is NaN, so the interval stays as it
-// was -- the closed slab contains the ray. Unused slots (empty boxes) are never entered.
+// mask), and where it enters each (tEntry): a4's rayEntersBox on four boxes at once. Axis-parallel
+// rays are exact: a plane distance 0 * inf is NaN, and _mm_max_ps(a, b) / _mm_min_ps(a, b) return b
+// when a is NaN, so the interval stays as it was -- the closed slab contains the ray. Unused slots
+// (empty boxes) are never entered.
 inline int enterChildren(const WideRay& r, const WideBvhNode& node, __m128 tLimit, __m128& tEntry) {
-  const __m128 nx = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.box[r.nearX][0]), r.ox), r.ix);
-  const __m128 ny = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.box[r.nearY][1]), r.oy), r.iy);
-  const __m128 nz = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.box[r.nearZ][2]), r.oz), r.iz);
-  const __m128 fx = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.box[1 - r.nearX][0]), r.ox), r.ix);
-  const __m128 fy = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.box[1 - r.nearY][1]), r.oy), r.iy);
-  const __m128 fz = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.box[1 - r.nearZ][2]), r.oz), r.iz);
+  const __m128 nx = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.box[r.sideX][0]), r.ox), r.ix);
+  const __m128 ny = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.box[r.sideY][1]), r.oy), r.iy);
+  const __m128 nz = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.box[r.sideZ][2]), r.oz), r.iz);
+  const __m128 fx = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.box[1 - r.sideX][0]), r.ox), r.ix);
+  const __m128 fy = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.box[1 - r.sideY][1]), r.oy), r.iy);
+  const __m128 fz = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.box[1 - r.sideZ][2]), r.oz), r.iz);
   __m128 tn = _mm_max_ps(nx, r.tmin);  // (operand order matters: NaN first)
   tn = _mm_max_ps(ny, tn);
   tn = _mm_max_ps(nz, tn);
@@ -409,8 +416,7 @@ inline int enterChildren(const WideRay& r, const WideBvhNode& node, __m128 tLimi
   tf = _mm_min_ps(fy, tf);
   tf = _mm_min_ps(fz, tf);
   tEntry = tn;
-  const __m128 reach = _mm_add_ps(_mm_mul_ps(tf, _mm_set1_ps(kRobustScale)), r.slack);
-  return _mm_movemask_ps(_mm_cmple_ps(tn, reach));
+  return _mm_movemask_ps(_mm_cmple_ps(tn, _mm_add_ps(_mm_mul_ps(tf, r.scale), r.slack)));
 }
 
 // The next float above t (t finite or infinite, not NaN).
@@ -478,8 +484,9 @@ bool traverse(const WideBvh& bvh, const WideRay& r, Hit& hit, QueryCounters& cou
       __m128 tEntry;
       unsigned mask = static_cast<unsigned>(enterChildren(r, node, tLimit4, tEntry));
       if (mask != 0) {
-        alignas(16) float t[4];
+        alignas(16) float t[4], tKey[4];
         _mm_store_ps(t, tEntry);
+        _mm_store_ps(tKey, _mm_max_ps(tEntry, _mm_setzero_ps()));  // (>= 0: ordered as their bits)
         // Start loading every child entered: their cache misses overlap instead of following one another.
         for (unsigned m = mask; m != 0; m &= m - 1) {
           const int c = std::countr_zero(m);
@@ -488,39 +495,46 @@ bool traverse(const WideBvh& bvh, const WideRay& r, Hit& hit, QueryCounters& cou
           _mm_prefetch(p, _MM_HINT_T0);
           _mm_prefetch(p + 64, _MM_HINT_T0);
         }
-        int a = std::countr_zero(mask);
-        mask &= mask - 1;
-        if (mask == 0) {  // one child: no stack
+        if ((mask & (mask - 1)) == 0) {  // one child: no stack
+          const int a = std::countr_zero(mask);
           ref = node.child[a];
           count = node.count[a];
           continue;
         }
-        int b = std::countr_zero(mask);
-        mask &= mask - 1;
-        if (mask == 0) {  // two: postpone the farther
-          if (t[b] < t[a]) std::swap(a, b);
-          stack[sp++] = {node.child[b], node.count[b], t[b]};
-          ref = node.child[a];
-          count = node.count[a];
-          continue;
+        // Two to four: sort by decreasing entry distance without branches (keys: the bits of the distance
+        // clamped to >= 0, then the slot), push all but the nearest, take the nearest. Any hit: no order.
+        uint64_t key[4];
+        int k = 0;
+        for (unsigned m = mask; m != 0; m &= m - 1) {
+          const auto c = static_cast<unsigned>(std::countr_zero(m));
+          key[k++] = (uint64_t{std::bit_cast<uint32_t>(tKey[c])} << 32) | c;
         }
-        // Three or four: push all, sort them by decreasing entry (nearest on top), take the nearest.
-        const int first = sp;
-        stack[sp++] = {node.child[a], node.count[a], t[a]};
-        stack[sp++] = {node.child[b], node.count[b], t[b]};
-        for (; mask != 0; mask &= mask - 1) {
-          const int c = std::countr_zero(mask);
+        auto order = [&key](int i, int j) {  // key[i] >= key[j] afterwards
+          const uint64_t lo = std::min(key[i], key[j]), hi = std::max(key[i], key[j]);
+          key[i] = hi;
+          key[j] = lo;
+        };
+        if constexpr (AnyHit) {
+        } else if (k == 2) {
+          order(0, 1);
+        } else if (k == 3) {
+          order(0, 1);
+          order(1, 2);
+          order(0, 1);
+        } else {
+          order(0, 1);
+          order(2, 3);
+          order(0, 2);
+          order(1, 3);
+          order(1, 2);
+        }
+        for (int i = 0; i < k - 1; ++i) {
+          const auto c = static_cast<int>(key[i] & 3u);
           stack[sp++] = {node.child[c], node.count[c], t[c]};
         }
-        for (int i = first + 1; i < sp; ++i) {
-          const StackEntry e = stack[i];
-          int j = i;
-          for (; j > first && stack[j - 1].tEntry < e.tEntry; --j) stack[j] = stack[j - 1];
-          stack[j] = e;
-        }
-        --sp;
-        ref = stack[sp].ref;
-        count = stack[sp].count;
+        const auto c = static_cast<int>(key[k - 1] & 3u);
+        ref = node.child[c];
+        count = node.count[c];
         continue;
       }
     } else {

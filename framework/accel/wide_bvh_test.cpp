@@ -20,6 +20,7 @@
 #include "test_support.h"
 
 #include "modules/registry.h"
+#include "render/ray_offset.h"
 #include "scene/camera.h"
 #include "scene/scene_loader.h"
 
@@ -136,7 +137,8 @@ std::vector<Ray> axisRays(const Geometry& g, unsigned seed) {
 
 TEST(WideBvh, RandomRaysHitWhatBruteForceHits) {
   Geometry g = randomSoup(3000, 0.08f, 7);
-  for (int i = 0; i < 40; ++i) addSphere(g, Vec3(-0.9f + 0.045f * float(i), 0.1f * float(i % 7) - 0.3f, 0.0f), 0.03f);
+  for (int i = 0; i < 40; ++i)
+    addSphere(g, Vec3(-0.9f + 0.045f * float(i), 0.1f * float(i % 7) - 0.3f, 0.0f), 0.03f);
   const std::vector<Ray> rays = randomRays(20000, 1.5f, 11);
   EXPECT_GT(expectSameAsBruteForce(g, rays), 2000);
   // Other leaf sizes and bin counts: other trees, the same answers.
@@ -196,6 +198,47 @@ TEST(WideBvh, RaysThroughSharedEdgesAndVerticesOfAMesh) {
   EXPECT_EQ(expectSameAsBruteForce(g, rays), static_cast<int>(rays.size()));  // no crack: every ray hits
 }
 
+// Shadow and bounce rays leaving big flat walls (coordinates in the hundreds, as in the Cornell box) from
+// offset hit points: the triangle test's t there is off by more than the offset, so brute force may
+// even report the wall itself just behind the origin -- the boxes must be entered all the same.
+TEST(WideBvh, RaysLeavingWallsAsBruteForceSeesThem) {
+  Geometry g;
+  const float s = 555.0f;
+  auto quad = [&g](Vec3 o, Vec3 e1, Vec3 e2) {
+    addTriangle(g, o, o + e1, o + e1 + e2);
+    addTriangle(g, o, o + e1 + e2, o + e2);
+  };
+  quad({0, 0, 0}, {s, 0, 0}, {0, 0, s});        // floor
+  quad({0, s, 0}, {0, 0, s}, {s, 0, 0});        // ceiling
+  quad({0, 0, s}, {s, 0, 0}, {0, s, 0});        // back
+  quad({0, 0, 0}, {0, 0, s}, {0, s, 0});        // x = 0
+  quad({s, 0, 0}, {0, s, 0}, {0, 0, s});        // x = s
+  quad({130, 165, 65}, {-48, 0, 160}, {160, 0, 49});  // a block's top, tilted edges
+  addSphere(g, Vec3(400.0f, 100.0f, 300.0f), 90.0f);
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  std::normal_distribution<float> normal;
+  const Vec3 light(278.0f, 545.0f, 279.5f);
+  std::vector<Ray> rays;
+  for (int i = 0; i < 20000; ++i) {
+    const glm::uvec3& t = g.triangles[static_cast<size_t>(i) % g.triangles.size()];
+    const Vec3 p0 = g.positions[t.x], p1 = g.positions[t.y], p2 = g.positions[t.z];
+    float a = u(rng), b = u(rng);
+    if (a + b > 1.0f) {
+      a = 1.0f - a;
+      b = 1.0f - b;
+    }
+    const Vec3 p = p0 + a * (p1 - p0) + b * (p2 - p0);
+    Vec3 n = glm::normalize(glm::cross(p1 - p0, p2 - p0));
+    if (glm::dot(n, light - p) < 0.0f) n = -n;
+    const Vec3 origin = offsetRayOrigin(p, n);
+    rays.push_back(makeRay(origin, light - origin, 0.0f, 1.0f - 1e-4f));  // shadow ray
+    const Vec3 d = glm::normalize(n + glm::normalize(Vec3(normal(rng), normal(rng), normal(rng))));
+    rays.push_back(makeRay(origin, d));  // bounce
+  }
+  EXPECT_GT(expectSameAsBruteForce(g, rays), 10000);
+}
+
 TEST(WideBvh, BunnyCameraAndRandomRays) {
   const Scene scene = loadScene(std::string(LIGHTLAB_DATA_DIR) + "/scenes/bunny.json");
   Camera cam = scene.camera;
@@ -203,7 +246,8 @@ TEST(WideBvh, BunnyCameraAndRandomRays) {
   const CameraFrame frame(cam);
   std::vector<Ray> rays;
   for (int y = 0; y < cam.height; ++y)
-    for (int x = 0; x < cam.width; ++x) rays.push_back(referenceCameraRay(cam, frame, float(x) + 0.5f, float(y) + 0.5f));
+    for (int x = 0; x < cam.width; ++x)
+      rays.push_back(referenceCameraRay(cam, frame, float(x) + 0.5f, float(y) + 0.5f));
   const Bounds3 b = scene.geometry.sceneBounds();
   std::mt19937 rng(3);
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
@@ -282,7 +326,8 @@ TEST(WideBvh, ManyIdenticalTrianglesGiveTheSmallestIdOnTies) {
   Geometry g;
   for (int i = 0; i < 1000; ++i) addTriangle(g, {-1, -1, 0}, {1, -1, 0}, {0, 1, 0});
   addSphere(g, Vec3(0.0f, 0.0f, 3.0f), 0.1f);
-  for (const std::vector<std::string>& sets : std::vector<std::vector<std::string>>{{}, {"max_leaf=1"}, {"max_leaf=16"}}) {
+  const std::vector<std::vector<std::string>> settings = {{}, {"max_leaf=1"}, {"max_leaf=16"}};
+  for (const std::vector<std::string>& sets : settings) {
     const auto wide = build("bvh4", g, sets);
     QueryCounters counters;
     Hit hit;
@@ -292,6 +337,10 @@ TEST(WideBvh, ManyIdenticalTrianglesGiveTheSmallestIdOnTies) {
     EXPECT_LE(wide->stats().depth, kWideBvhMaxDepth);
     expectSameAsBruteForce(g, randomRays(2000, 1.0f, 37), sets);
   }
+}
+
+bool contains(const Bounds3& outer, const Bounds3& inner) {
+  return glm::all(glm::lessThanEqual(outer.min, inner.min)) && glm::all(glm::lessThanEqual(inner.max, outer.max));
 }
 
 // Every primitive in exactly one leaf, leaves no bigger than max_leaf, every box holding its children's
@@ -320,7 +369,7 @@ TEST(WideBvh, WellFormedStructure) {
         if (!node.isLeaf(i)) {
           EXPECT_GT(node.child[i], index);  // depth-first order: children after their parent
           const Bounds3 outer = node.childBounds(i), inner = bvh.nodes[node.child[i]].childBounds(0);
-          EXPECT_TRUE(glm::all(glm::lessThanEqual(outer.min, inner.min)) && glm::all(glm::lessThanEqual(inner.max, outer.max)));
+          EXPECT_TRUE(contains(outer, inner));
           stack.push_back(node.child[i]);
         }
       }
@@ -333,7 +382,7 @@ TEST(WideBvh, WellFormedStructure) {
           const uint32_t prim = bvh.prims[s].prim;
           ++seen[prim];
           const Bounds3 pb = g.bounds(prim);
-          EXPECT_TRUE(glm::all(glm::lessThanEqual(box.min, pb.min)) && glm::all(glm::lessThanEqual(pb.max, box.max)));
+          EXPECT_TRUE(contains(box, pb));
           if (g.isTriangle(prim)) {
             EXPECT_EQ(bvh.prims[s].p1, g.positions[g.triangles[prim].y]);
           }

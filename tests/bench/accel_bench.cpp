@@ -86,10 +86,6 @@ const std::vector<BenchAccel>& benchAccels() {
                                  {"bvh-equal", "bvh", {"split=equal-counts"}},
                                  {"bvh-sah-sphere", "bvh", {"split=sah", "volume=sphere"}},
                                  {"bvh4", "bvh4", {}},
-                                 {"bvh4-l1", "bvh4", {"max_leaf=1"}},  // TEMP
-                                 {"bvh4-l2", "bvh4", {"max_leaf=2"}},  // TEMP
-                                 {"bvh4-l8", "bvh4", {"max_leaf=8"}},  // TEMP
-                                 {"bvh4-b32", "bvh4", {"bins=32"}},  // TEMP
                                  {"kdtree", "kdtree", {}},
                                  {"kdtree-binned", "kdtree", {"build=binned"}},
                                  {"bsp", "bsp", {}},

@@ -25,6 +25,7 @@ shot two_panes
 shot wipe
 shot difference
 shot structure
+shot structure_bsp
 shot cost
 shot gpu_twin
 shot cpu_gpu
@@ -44,7 +45,15 @@ shot light_paths
 "$CHECK" "$OUT/structure.png" differs "$OUT/cost.png"
 python3 -c "import json,sys; p=json.load(open('$OUT/structure.json'))['panes'][1]; sys.exit(0 if p['structure_nodes'] > 4 else 1)" \
   || { echo "FAIL: no structure overlay drawn"; exit 1; }
-echo "ok: cost view and structure overlay"
+# The BSP tree's cells are polyhedra drawn by their edges: the overlay must change the picture under it.
+"$LL" --quiet render data/scenes/cornell_bunny.json -t raycast -a bsp --set intersection=framework --width 160 \
+  --height 160 -o "$OUT/bsp_cli.pfm" >/dev/null
+python3 -c "import json,sys; p=json.load(open('$OUT/structure_bsp.json'))['panes'][0]; sys.exit(0 if p['structure_nodes'] > 8 else 1)" \
+  || { echo "FAIL: no BSP cells drawn"; exit 1; }
+if "$CHECK" "$OUT/structure_bsp.png" pane 0 "$OUT/bsp_cli.pfm" >/dev/null 2>&1; then
+  echo "FAIL: the BSP cells left the picture unchanged"; exit 1
+fi
+echo "ok: cost view and structure overlay (BVH boxes, BSP cells)"
 # The GPU twin shades like ray casting where nothing casts shadows (a lone lit sphere).
 "$LL" --quiet render data/scenes/tests/sphere_point_light.json -t raycast -a bvh --set intersection=framework \
   --width 160 --height 160 -o "$OUT/sphere.pfm" >/dev/null

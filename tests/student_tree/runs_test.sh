@@ -31,7 +31,7 @@ grep -q 'by their reference (--reference): A2.1,A2.2,A2.3,A2.4,A2.5' "$work/ref.
   { cat "$work/ref.txt"; echo "FAIL: the render does not say which tasks ran by their reference"; exit 1; }
 # A4: the accelerators' stubs: the reference traversal answers, the same picture as brute force, no stripes.
 build/lightlab --quiet render data/scenes/bunny.json -a none --width 48 --set intersection=framework -o "$work/none.pfm" 2>/dev/null
-for pair in bvh:A4.2 kdtree:A4.3 octree:A4.4; do
+for pair in bvh:A4.2 kdtree:A4.3 octree:A4.4 bsp:A4.5; do
   accel=${pair%%:*} task=${pair##*:}
   build/lightlab --quiet render data/scenes/bunny.json -a "$accel" --width 48 --set intersection=framework \
     -o "$work/$accel.pfm" 2>"$work/$accel.txt"
