@@ -264,12 +264,9 @@ BspTree buildBspTree(const Geometry& geometry, const BspSettings& settings, BspB
     }
     tree.sceneCentre = tree.bounds.center();
     tree.sceneRadius = 0.5f * tree.bounds.diagonal();
-    const int autoDepth = static_cast<int>(std::lround(8.0 + 1.3 * std::log2(static_cast<double>(n))));
-    const int maxDepth = std::clamp(settings.maxDepth > 0 ? settings.maxDepth : autoDepth, 0, kBspMaxDepth);
+    const int maxDepth = kdbuild::maxSplits(settings.maxDepth, n, kBspMaxDepth);
     tree.storeTrianglesByPrimitive();
-    // Plane distances round by a few ulps of the coordinates: pad by far more (the KD-tree's pad).
-    const Vec3 far = glm::max(glm::abs(tree.bounds.min), glm::abs(tree.bounds.max));
-    const float pad = 1e-5f * (std::max({far.x, far.y, far.z}) + tree.bounds.diagonal());
+    const float pad = kdbuild::roundingPad(tree.bounds);
     // The root cell: the scene's box grown by the pad, so a flat scene still has a volume to cut.
     Bounds3 root = tree.bounds;
     root.min -= Vec3(pad);

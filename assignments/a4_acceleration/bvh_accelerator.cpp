@@ -63,15 +63,7 @@ class BvhAccelerator final : public Accelerator {
     return shapes;
   }
 
-  AcceleratorStats stats() const override {
-    AcceleratorStats s;
-    s.buildSeconds = buildSeconds_;
-    s.memoryBytes = info_.memoryBytes;
-    s.nodeCount = info_.nodeCount;
-    s.depth = info_.depth;
-    s.sahCost = info_.sahCost;
-    return s;
-  }
+  AcceleratorStats stats() const override { return treeStats(buildSeconds_, info_); }
 
  private:
   // A stub that ran during the build made this tree a brute-force leaf: say

@@ -32,13 +32,10 @@ KdTree buildKdTree(const Geometry& geometry, const KdSettings& settings, KdBuild
     }
     tree.sceneCentre = tree.bounds.center();
     tree.sceneRadius = 0.5f * tree.bounds.diagonal();
-    const int autoDepth = static_cast<int>(std::lround(8.0 + 1.3 * std::log2(static_cast<double>(n))));
-    const int maxDepth = std::clamp(settings.maxDepth > 0 ? settings.maxDepth : autoDepth, 0, kKdMaxDepth);
+    const int maxDepth = kdbuild::maxSplits(settings.maxDepth, n, kKdMaxDepth);
     tree.primIds.reserve(2 * static_cast<size_t>(n));
     tree.storeTrianglesByPrimitive();
-    // Clipping rounds by a few ulps of the coordinates: pad by far more.
-    const Vec3 far = glm::max(glm::abs(tree.bounds.min), glm::abs(tree.bounds.max));
-    const float pad = 1e-5f * (std::max({far.x, far.y, far.z}) + tree.bounds.diagonal());
+    const float pad = kdbuild::roundingPad(tree.bounds);
     const kdbuild::BuildTotals totals =
         settings.build == KdBuild::Sweep ? kdbuild::buildSweep(tree, std::move(prims), settings, maxDepth, pad)
                                          : kdbuild::buildBinned(tree, std::move(prims), settings, maxDepth, pad);

@@ -4,13 +4,28 @@
 // gathers while it writes nodes.
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
 #include "core/math.h"
 
 namespace ll::a4::kdbuild {
+
+// The most splits above a leaf: `setting` when positive, else PBRT's rule 8 + 1.3 log2(n); at most `cap`.
+inline int maxSplits(int setting, uint32_t n, int cap) {
+  const int automatic = static_cast<int>(std::lround(8.0 + 1.3 * std::log2(static_cast<double>(n))));
+  return std::clamp(setting > 0 ? setting : automatic, 0, cap);
+}
+
+// World-space slack for the rounding of clipping and plane distances in a scene with box `scene`: a few
+// ulps of its coordinates, padded by far more.
+inline float roundingPad(const Bounds3& scene) {
+  const Vec3 far = glm::max(glm::abs(scene.min), glm::abs(scene.max));
+  return 1e-5f * (std::max({far.x, far.y, far.z}) + scene.diagonal());
+}
 
 // A primitive as one node's build sees it: its box clipped to the node's cell (world space).
 struct KdPrim {

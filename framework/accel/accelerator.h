@@ -46,6 +46,18 @@ struct NodeShape {
   std::vector<std::pair<Vec3, Vec3>> edges;  // a convex cell (BSP tree): drawn instead of the box when given
 };
 
+// The statistics of a tree whose build reports memoryBytes, nodeCount, depth and sahCost.
+template <class BuildInfo>
+AcceleratorStats treeStats(double buildSeconds, const BuildInfo& info) {
+  AcceleratorStats s;
+  s.buildSeconds = buildSeconds;
+  s.memoryBytes = info.memoryBytes;
+  s.nodeCount = info.nodeCount;
+  s.depth = info.depth;
+  s.sahCost = info.sahCost;
+  return s;
+}
+
 class Accelerator {
  public:
   virtual ~Accelerator() = default;

@@ -1,3 +1,5 @@
+// LIGHTLAB_ANSWER_FILE A4.2: a 4-wide BVH walk holds the binary one (task A4.2), so the
+// student tree holds this file as object code only (tasks/framework_answer.h).
 // Accelerator `bvh4` (see wide_bvh.h): the binned SAH build collapsed into
 // 4-wide nodes, the SSE traversal, and the registration.
 #include "accel/wide_bvh.h"
@@ -353,8 +355,11 @@ uint32_t flatten(const WideBvhNode* tmp, uint32_t index, int depth, float rootAr
 
 // --- Traversal ------------------------------------------------------------------------
 
-// Rounding slack of the slab test (Ize, "Robust BVH Ray Traversal", JCGT 2(2), 2013: 1 + 2 gamma(3)).
-constexpr float kRobustScale = 1.0f + 2.0f * 3.0f * (std::numeric_limits<float>::epsilon() * 0.5f);
+// Rounding margins of the slab test (Ize, "Robust BVH Ray Traversal", JCGT 2(2), 2013). A plane
+// distance (p - o) * (1/d) is within gamma(3) of the exact one, relative; Ize scales the far end of the
+// interval by 1 + 2 gamma(3). Here the far planes use 1/d pre-scaled by kFarScale = 1 + 16 u (u = 2^-24,
+// the unit roundoff), which also covers the rounding of that product: (1 + 3u) / (1 - 4u) < kFarScale.
+constexpr float kFarScale = 1.0f + 16.0f * (std::numeric_limits<float>::epsilon() * 0.5f);
 // Absolute slack, in ulps of the distances in the scene (see WideRay::tSlack).
 constexpr float kSlackUlps = 32.0f;
 constexpr int kStackSize = 3 * kWideBvhMaxDepth + 1;  // each level leaves at most three siblings behind
@@ -363,11 +368,11 @@ constexpr int kStackSize = 3 * kWideBvhMaxDepth + 1;  // each level leaves at mo
 struct WideRay {
   Ray ray;
   WatertightRay wray;
-  __m128 ox, oy, oz;  // origin, broadcast
-  __m128 ix, iy, iz;  // 1/dir, broadcast; +-infinity for zero components
-  __m128 tmin;        // ray.tmin, broadcast
-  __m128 scale;       // kRobustScale, broadcast
-  __m128 slack;       // tSlack, broadcast
+  __m128 ox, oy, oz;        // origin, broadcast
+  __m128 ix, iy, iz;        // 1/dir, broadcast (near planes); +-infinity for zero components
+  __m128 fx, fy, fz;        // 1/dir * kFarScale (far planes)
+  __m128 tmin;              // ray.tmin, broadcast
+  __m128 slack;             // tSlack, broadcast
   int sideX, sideY, sideZ;  // box side of the slab's near plane: 1 (max) where dir < 0 (or -0)
   // The triangle test's t and a box's plane distances round differently, by up to a few ulps of the
   // distances from the origin to the geometry (not of t): a box is skipped only when it lies clearly
@@ -375,40 +380,47 @@ struct WideRay {
   // |o - c| and 1/|dir|; here with their upper bounds |o - c|_1 and 1/max|dir_i| = |wray.sz|.
   float tSlack;
   WideRay(const Ray& r, const WideBvh& bvh) : ray(r), wray(r) {
-    alignas(16) float inv[4];
-    _mm_store_ps(inv, _mm_div_ps(_mm_set1_ps(1.0f), _mm_setr_ps(r.dir.x, r.dir.y, r.dir.z, 1.0f)));
+    const __m128 inv = _mm_div_ps(_mm_set1_ps(1.0f), _mm_setr_ps(r.dir.x, r.dir.y, r.dir.z, 1.0f));
+    alignas(16) float i[4], f[4];
+    _mm_store_ps(i, inv);
+    _mm_store_ps(f, _mm_mul_ps(inv, _mm_set1_ps(kFarScale)));
     ox = _mm_set1_ps(r.origin.x);
     oy = _mm_set1_ps(r.origin.y);
     oz = _mm_set1_ps(r.origin.z);
-    ix = _mm_set1_ps(inv[0]);
-    iy = _mm_set1_ps(inv[1]);
-    iz = _mm_set1_ps(inv[2]);
-    sideX = inv[0] < 0.0f;
-    sideY = inv[1] < 0.0f;
-    sideZ = inv[2] < 0.0f;
+    ix = _mm_set1_ps(i[0]);
+    iy = _mm_set1_ps(i[1]);
+    iz = _mm_set1_ps(i[2]);
+    fx = _mm_set1_ps(f[0]);
+    fy = _mm_set1_ps(f[1]);
+    fz = _mm_set1_ps(f[2]);
+    sideX = i[0] < 0.0f;
+    sideY = i[1] < 0.0f;
+    sideZ = i[2] < 0.0f;
     const Vec3 oc = glm::abs(r.origin - bvh.sceneCentre);
     tSlack = kSlackUlps * std::numeric_limits<float>::epsilon() * (oc.x + oc.y + oc.z + bvh.sceneRadius) *
              std::abs(wray.sz);
     tmin = _mm_set1_ps(r.tmin);
-    scale = _mm_set1_ps(kRobustScale);
     slack = _mm_set1_ps(tSlack);
   }
-  // Beyond this a box cannot hold a hit at distance t.
+  // Postponed children entered beyond this cannot hold a hit at distance t.
   float cullLimit(float t) const { return t + tSlack; }
+  // The far end of the slab test's interval for the closest hit so far at t (margins as for far planes).
+  __m128 farLimit(float t) const { return _mm_set1_ps(cullLimit(t) * kFarScale); }
 };
 
 // The children of `node` whose boxes the ray meets within [ray.tmin, tLimit], up to rounding (a bit
-// mask), and where it enters each (tEntry): a4's rayEntersBox on four boxes at once. Axis-parallel
-// rays are exact: a plane distance 0 * inf is NaN, and _mm_max_ps(a, b) / _mm_min_ps(a, b) return b
-// when a is NaN, so the interval stays as it was -- the closed slab contains the ray. Unused slots
-// (empty boxes) are never entered.
+// mask), and where it enters each (tEntry). It is a4's rayEntersBox, tn <= tf * (1 + 2 gamma(3)) +
+// tSlack, on four boxes at once, rearranged to tn - tSlack <= tf' with the far planes pre-scaled
+// (shorter dependency chain). tLimit: farLimit(hit.t). Axis-parallel rays are exact: a plane distance
+// 0 * inf is NaN, and _mm_max_ps(a, b) / _mm_min_ps(a, b) return b when a is NaN, so the interval stays
+// as it was -- the closed slab contains the ray. Unused slots (empty boxes) are never entered.
 inline int enterChildren(const WideRay& r, const WideBvhNode& node, __m128 tLimit, __m128& tEntry) {
   const __m128 nx = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.box[r.sideX][0]), r.ox), r.ix);
   const __m128 ny = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.box[r.sideY][1]), r.oy), r.iy);
   const __m128 nz = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.box[r.sideZ][2]), r.oz), r.iz);
-  const __m128 fx = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.box[1 - r.sideX][0]), r.ox), r.ix);
-  const __m128 fy = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.box[1 - r.sideY][1]), r.oy), r.iy);
-  const __m128 fz = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.box[1 - r.sideZ][2]), r.oz), r.iz);
+  const __m128 fx = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.box[1 - r.sideX][0]), r.ox), r.fx);
+  const __m128 fy = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.box[1 - r.sideY][1]), r.oy), r.fy);
+  const __m128 fz = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.box[1 - r.sideZ][2]), r.oz), r.fz);
   __m128 tn = _mm_max_ps(nx, r.tmin);  // (operand order matters: NaN first)
   tn = _mm_max_ps(ny, tn);
   tn = _mm_max_ps(nz, tn);
@@ -416,7 +428,7 @@ inline int enterChildren(const WideRay& r, const WideBvhNode& node, __m128 tLimi
   tf = _mm_min_ps(fy, tf);
   tf = _mm_min_ps(fz, tf);
   tEntry = tn;
-  return _mm_movemask_ps(_mm_cmple_ps(tn, _mm_add_ps(_mm_mul_ps(tf, r.scale), r.slack)));
+  return _mm_movemask_ps(_mm_cmple_ps(_mm_sub_ps(tn, r.slack), tf));
 }
 
 // The next float above t (t finite or infinite, not NaN).
@@ -474,7 +486,7 @@ bool traverse(const WideBvh& bvh, const WideRay& r, Hit& hit, QueryCounters& cou
   int sp = 0;
   uint32_t ref = 0, count = 0;  // the root
   float tLimit = r.cullLimit(hit.t);
-  __m128 tLimit4 = _mm_set1_ps(tLimit);
+  __m128 tLimit4 = r.farLimit(hit.t);
   uint64_t visited = 0, tested = 0;
   bool found = false;
   for (;;) {
@@ -548,7 +560,7 @@ bool traverse(const WideBvh& bvh, const WideRay& r, Hit& hit, QueryCounters& cou
         } else if (closerHit(bvh, s, r, hit)) {
           found = true;
           tLimit = r.cullLimit(hit.t);
-          tLimit4 = _mm_set1_ps(tLimit);
+          tLimit4 = r.farLimit(hit.t);
         }
       }
       if (AnyHit && found) break;

@@ -1,7 +1,8 @@
 // Accelerator `bvh4` (the 4-wide BVH): the same hits as brute force, bit for
 // bit (t, primitive, barycentrics), on random rays, axis-parallel rays (1/dir
-// infinite), rays exactly through shared edges and vertices, the bunny and
-// scenes with spheres; any hit agrees with closest hit; degenerate inputs
+// infinite), rays exactly through shared edges and vertices, shadow and bounce
+// rays leaving big walls, the bunny and scenes with spheres, for several leaf
+// sizes and bin counts; any hit agrees with closest hit; degenerate inputs
 // (no primitive, one, a thousand identical ones); a well-formed structure.
 // (tests/numerics and tests/every_scene_every_technique_test.cpp run their
 // cases on every registered accelerator, bvh4 included.)
