@@ -39,25 +39,9 @@ starts=$(field s1 starts)
 open_combo s2b scene.files
 bunny=$(q s2b.json "([k for k in j['widgets'] if k == 'scene.file:$ROOT/data/scenes/bunny.json'] + [k for k in j['widgets'] if k.startswith('scene.file:') and k.endswith('/data/scenes/bunny.json')] + [''])[0]")
 [ -n "$bunny" ] || fail "the scene list has no data/scenes/bunny.json"
-# Polled on its own: every screenshot adds a message, and only the last 50 are kept. A click on the file
-# that no frame took up (a loaded CI machine lost one) is made again, the list reopened if it closed:
-# three tries of 40 s, as a user would.
+# Polled on its own: every screenshot adds a message, and only the last 50 are kept.
 opened="any(m['text'] == 'opened ${bunny#scene.file:}' for m in j['messages'])"
-for attempt in 1 2 3; do
-  if [ "$attempt" -gt 1 ]; then
-    shot s2r
-    [ "$(q s2r.json "'scene.files.list' in j['widgets']")" = True ] || open_combo s2b scene.files
-  fi
-  click s2c "$bunny" 0.5 scene.files.list
-  end=$((SECONDS + 40)) ok=0
-  while [ $SECONDS -lt $end ]; do
-    shot s2o
-    if [ "$(q s2o.json "$opened")" = True ]; then ok=1; break; fi
-    sleep 0.3
-  done
-  [ $ok = 1 ] && break
-  [ "$attempt" = 3 ] && fail "s2o: never true after three clicks on the bunny: $opened"
-done
+pick_until s2o scene.files "$bunny" "$opened"
 until_shot s2 "j['scene'].endswith('/data/scenes/bunny.json') and all(p['starts'] > s for p, s in zip(j['panes'], $starts)) and $done_both"
 echo "ok: the bunny was opened from the scene list and rendered in both panes"
 
@@ -66,24 +50,8 @@ open_combo s3b B.technique
 tech=$(q s3b.json "([t for t in ('whitted', 'blinn-phong') if 'B.technique:' + t in j['widgets']] + [k.split(':', 1)[1] for k in j['widgets'] if k.startswith('B.technique:') and k != 'B.technique:raycast'] + [''])[0]")
 if [ -n "$tech" ]; then
   starts=$(field s3b starts)
-  # A click on the list item that no frame took up (a loaded CI machine) is made again, the list
-  # reopened if it closed: three tries of 30 s. Then the render gets its own, longer wait.
   switched="j['panes'][1]['technique'] == '$tech' and j['panes'][1]['starts'] > $starts[1]"
-  for attempt in 1 2 3; do
-    if [ "$attempt" -gt 1 ]; then
-      shot s3r
-      [ "$(q s3r.json "'B.technique.list' in j['widgets']")" = True ] || open_combo s3b B.technique
-    fi
-    click s3c "B.technique:$tech" 0.5 B.technique.list
-    end=$((SECONDS + 30)) ok=0
-    while [ $SECONDS -lt $end ]; do
-      shot s3s
-      if [ "$(q s3s.json "$switched")" = True ]; then ok=1; break; fi
-      sleep 0.3
-    done
-    [ $ok = 1 ] && break
-    [ "$attempt" = 3 ] && fail "s3s: never true after three clicks on $tech: $switched"
-  done
+  pick_until s3s B.technique "B.technique:$tech" "$switched"
   until_shot s3 "$switched and j['panes'][0]['technique'] == 'raycast' and $done_both" 240
   echo "ok: pane B switched to $tech and rendered, beside ray casting in A"
 else

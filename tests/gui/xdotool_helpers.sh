@@ -10,6 +10,7 @@
 #   click NAME WIDGET [FRACTION-ACROSS] [BOX]  reveal, then press the widget
 #   open_combo NAME WIDGET  click a combo until its list shows (three tries)
 #   click_until NAME WIDGET FRACTION COND  click the widget until COND holds (three clicks, 30 s each)
+#   pick_until NAME COMBO ITEM COND  click ITEM in COMBO's open list until COND holds (three clicks, 40 s each)
 #   $done_both              both panes finished all passes of their last submit, and the pixels
 #                           on screen are their last image (display bytes are encoded in the
 #                           background, so the sidecar's phase can run ahead of the texture; a
@@ -97,4 +98,24 @@ click_until() {
     done
   done
   fail "$1: never true after three clicks on '$2': $4"
+}
+# pick_until NAME COMBO ITEM COND: click ITEM in COMBO's open list, then screenshots until COND holds (kept
+# as NAME.*); a click that no frame took up on a loaded machine is made again, the list reopened if it
+# closed, as a user would: three tries of 40 s.
+pick_until() {
+  local attempt end
+  for attempt in 1 2 3; do
+    if [ "$attempt" -gt 1 ]; then
+      shot "$1_reopen"
+      [ "$(q "$1_reopen.json" "'$2.list' in j['widgets']")" = True ] || open_combo "$1_list" "$2"
+    fi
+    click "$1_click" "$3" 0.5 "$2.list"
+    end=$((SECONDS + 40))
+    while [ $SECONDS -lt $end ]; do
+      shot "$1"
+      [ "$(q "$1.json" "$4")" = True ] && return 0
+      sleep 0.3
+    done
+  done
+  fail "$1: never true after three clicks on '$3': $4"
 }
