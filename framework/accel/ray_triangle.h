@@ -7,7 +7,6 @@
 #pragma once
 
 #include <cmath>
-#include <utility>
 
 #include "core/ray.h"
 #include "tasks/framework_answer.h"
@@ -35,10 +34,11 @@ LIGHTLAB_ANSWER_INLINE WatertightRay::WatertightRay(const Ray& ray) : origin(ray
   LIGHTLAB_ANSWER_GUARD("A2.3", "ll::WatertightRay (the framework's watertight triangle test)");
   const Vec3 a = glm::abs(ray.dir);
   kz = a.x > a.y ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2);
-  kx = (kz + 1) % 3;
-  ky = (kx + 1) % 3;
+  const int next = kz == 2 ? 0 : kz + 1, last = next == 2 ? 0 : next + 1;  // (selects, not % 3: per ray)
   const auto d = components(ray.dir);
-  if (d[kz] < 0.0f) std::swap(kx, ky);  // keep the winding
+  const bool flip = d[kz] < 0.0f;  // keep the winding
+  kx = flip ? last : next;
+  ky = flip ? next : last;
   sx = d[kx] / d[kz];
   sy = d[ky] / d[kz];
   sz = 1.0f / d[kz];

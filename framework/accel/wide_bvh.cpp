@@ -329,9 +329,28 @@ class Builder {
   std::atomic<uint32_t> next_{0};
 };
 
-// Copies the subtree of tmp[index] into `out` in depth-first order; returns its new index. Accumulates
-// depth and SAH cost (areas relative to the root's).
-uint32_t flatten(const WideBvhNode* tmp, uint32_t index, int depth, float rootArea, WideBvh& out) {
+// Packs the leaf's primitives prims[begin, begin + count) into packets at the end of out.packets; returns
+// the first one's index.
+uint32_t packLeaf(const PrimRef* prims, uint32_t begin, uint32_t count, const Geometry& geometry, WideBvh& out) {
+  const auto first = static_cast<uint32_t>(out.packets.size());
+  for (uint32_t base = 0; base < count; base += 4) {
+    WideBvhPacket& packet = out.packets.emplace_back();
+    for (int lane = 0; lane < 4; ++lane) {
+      const uint32_t prim = base + lane < count ? prims[begin + base + lane].prim() : WideBvhPacket::kEmpty;
+      packet.prim[lane] = prim;
+      for (int k = 0; k < 3; ++k) {
+        const Vec3 p = prim < out.triangleCount ? geometry.positions[geometry.triangles[prim][k]] : Vec3(0.0f);
+        for (int a = 0; a < 3; ++a) packet.v[k][a][lane] = p[a];
+      }
+    }
+  }
+  return first;
+}
+
+// Copies the subtree of tmp[index] into `out` in depth-first order, leaves packed; returns its new index.
+// Accumulates depth and SAH cost (areas relative to the root's).
+uint32_t flatten(const WideBvhNode* tmp, uint32_t index, int depth, float rootArea, const PrimRef* prims,
+                 const Geometry& geometry, WideBvh& out) {
   const auto at = static_cast<uint32_t>(out.nodes.size());
   out.nodes.push_back(tmp[index]);  // (reserved: no reallocation)
   const WideBvhNode& node = tmp[index];
@@ -343,8 +362,9 @@ uint32_t flatten(const WideBvhNode* tmp, uint32_t index, int depth, float rootAr
     if (node.isLeaf(i)) {
       out.depth = std::max(out.depth, depth + 1);
       if (rootArea > 0.0f) out.sahCost += double(b.halfSurfaceArea() / rootArea) * double(node.count[i]);
+      out.nodes[at].child[i] = packLeaf(prims, node.child[i], node.count[i], geometry, out);
     } else {
-      out.nodes[at].child[i] = flatten(tmp, node.child[i], depth + 1, rootArea, out);
+      out.nodes[at].child[i] = flatten(tmp, node.child[i], depth + 1, rootArea, prims, geometry, out);
     }
   }
   if (rootArea > 0.0f) out.sahCost += double(all.halfSurfaceArea() / rootArea);
@@ -370,6 +390,8 @@ struct WideRay {
   __m128 ix, iy, iz;        // 1/dir, broadcast (near planes); +-infinity for zero components
   __m128 fx, fy, fz;        // 1/dir * kFarScale (far planes)
   __m128 tmin;              // ray.tmin, broadcast
+  __m128 po[3];             // origin[kx], origin[ky], origin[kz] of wray, broadcast (the triangle test's frame)
+  __m128 shx, shy, shz;     // wray.sx, wray.sy, wray.sz, broadcast
   __m128 slack;             // tSlack, broadcast
   int sideX, sideY, sideZ;  // box side of the slab's near plane: 1 (max) where dir < 0 (or -0)
   // The triangle test's t and a box's plane distances round differently, by up to a few ulps of the
@@ -399,6 +421,13 @@ struct WideRay {
              std::abs(wray.sz);
     tmin = _mm_set1_ps(r.tmin);
     slack = _mm_set1_ps(tSlack);
+    const auto o = components(r.origin);
+    po[0] = _mm_set1_ps(o[wray.kx]);
+    po[1] = _mm_set1_ps(o[wray.ky]);
+    po[2] = _mm_set1_ps(o[wray.kz]);
+    shx = _mm_set1_ps(wray.sx);
+    shy = _mm_set1_ps(wray.sy);
+    shz = _mm_set1_ps(wray.sz);
   }
   // Postponed children entered beyond this cannot hold a hit at distance t.
   float cullLimit(float t) const { return t + tSlack; }
@@ -437,15 +466,48 @@ inline float nextFloatUp(float t) {
   return std::bit_cast<float>(t > 0.0f ? bits + 1 : bits - 1);
 }
 
-// Tests the primitive in leaf slot `slot` and keeps in `hit` what brute force keeps: the smallest t in
-// (ray.tmin, ray.tmax), on equal t the smaller primitive id. Returns whether `hit` changed.
-inline bool closerHit(const WideBvh& bvh, uint32_t slot, const WideRay& r, Hit& hit) {
-  const WideBvhLeafPrim& leaf = bvh.prims[slot];
-  const uint32_t prim = leaf.prim;
+// The lanes of `packet` that intersectTriangle() might find hit in (ray.tmin, tmax): it runs the test's
+// own float operations in the same order on four triangles at once (x86-64 has no FMA to contract them
+// into), so a lane it rules out is one the scalar test rejects. Kept for the scalar test: lanes where an
+// edge function is 0 (the test redoes them in double) -- among them every non-triangle, whose vertices
+// are all 0. tmax: the largest bound the caller may test with.
+inline unsigned candidateLanes(const WideRay& r, const WideBvhPacket& packet, __m128 tmax) {
+  const int kx = r.wray.kx, ky = r.wray.ky, kz = r.wray.kz;
+  __m128 x[3], y[3], z[3];  // the vertices relative to the origin, sheared (as ax, ay, az of the test)
+  for (int k = 0; k < 3; ++k) {
+    const __m128 dz = _mm_sub_ps(_mm_load_ps(packet.v[k][kz]), r.po[2]);
+    x[k] = _mm_sub_ps(_mm_sub_ps(_mm_load_ps(packet.v[k][kx]), r.po[0]), _mm_mul_ps(r.shx, dz));
+    y[k] = _mm_sub_ps(_mm_sub_ps(_mm_load_ps(packet.v[k][ky]), r.po[1]), _mm_mul_ps(r.shy, dz));
+    z[k] = _mm_mul_ps(r.shz, dz);
+  }
+  const __m128 u = _mm_sub_ps(_mm_mul_ps(x[2], y[1]), _mm_mul_ps(y[2], x[1]));
+  const __m128 v = _mm_sub_ps(_mm_mul_ps(x[0], y[2]), _mm_mul_ps(y[0], x[2]));
+  const __m128 w = _mm_sub_ps(_mm_mul_ps(x[1], y[0]), _mm_mul_ps(y[1], x[0]));
+  const __m128 zero = _mm_setzero_ps();
+  const __m128 onEdge = _mm_or_ps(_mm_or_ps(_mm_cmpeq_ps(u, zero), _mm_cmpeq_ps(v, zero)), _mm_cmpeq_ps(w, zero));
+  const __m128 anyNeg = _mm_or_ps(_mm_or_ps(_mm_cmplt_ps(u, zero), _mm_cmplt_ps(v, zero)), _mm_cmplt_ps(w, zero));
+  const __m128 anyPos = _mm_or_ps(_mm_or_ps(_mm_cmpgt_ps(u, zero), _mm_cmpgt_ps(v, zero)), _mm_cmpgt_ps(w, zero));
+  const __m128 det = _mm_add_ps(_mm_add_ps(u, v), w);
+  const __m128 tScaled = _mm_add_ps(_mm_add_ps(_mm_mul_ps(u, z[0]), _mm_mul_ps(v, z[1])), _mm_mul_ps(w, z[2]));
+  const __m128 t = _mm_mul_ps(tScaled, _mm_div_ps(_mm_set1_ps(1.0f), det));  // (det 0: inf or NaN, out of range)
+  const __m128 inRange = _mm_and_ps(_mm_cmpgt_ps(t, r.tmin), _mm_cmplt_ps(t, tmax));
+  const __m128 hit = _mm_andnot_ps(_mm_and_ps(anyNeg, anyPos), inRange);
+  return static_cast<unsigned>(_mm_movemask_ps(_mm_or_ps(hit, onEdge)));
+}
+
+// The lanes of a leaf's packet `base / 4` that hold one of its `count` primitives.
+inline unsigned usedLanes(uint32_t count, uint32_t base) { return count - base >= 4 ? 0xfu : (1u << (count - base)) - 1u; }
+
+// Tests lane `lane` of `packet` with the scalar tests and keeps in `hit` what brute force keeps: the
+// smallest t in (ray.tmin, ray.tmax), on equal t the smaller primitive id. Returns whether `hit` changed.
+inline bool closerHit(const WideBvh& bvh, const WideBvhPacket& packet, int lane, const WideRay& r, Hit& hit) {
+  const uint32_t prim = packet.prim[lane];
   const float tmax = (hit.prim != Hit::kNone && prim < hit.prim) ? nextFloatUp(hit.t) : hit.t;
   float t, b1 = 0.0f, b2 = 0.0f;
   if (prim < bvh.triangleCount) {
-    if (!intersectTriangle(r.wray, leaf.p0, leaf.p1, leaf.p2, r.ray.tmin, tmax, t, b1, b2)) return false;
+    if (!intersectTriangle(r.wray, packet.vertex(0, lane), packet.vertex(1, lane), packet.vertex(2, lane),
+                           r.ray.tmin, tmax, t, b1, b2))
+      return false;
   } else {
     const Sphere& s = bvh.geometry->spheres[prim - bvh.triangleCount];
     if (!intersectSphere(r.ray, s.center, s.radius, r.ray.tmin, tmax, t)) return false;
@@ -457,19 +519,19 @@ inline bool closerHit(const WideBvh& bvh, uint32_t slot, const WideRay& r, Hit& 
   return true;
 }
 
-// Whether the primitive in leaf slot `slot` is hit with ray.tmin < t < ray.tmax.
-inline bool anyHit(const WideBvh& bvh, uint32_t slot, const WideRay& r) {
-  const WideBvhLeafPrim& leaf = bvh.prims[slot];
-  const uint32_t prim = leaf.prim;
+// Whether lane `lane` of `packet` is hit with ray.tmin < t < ray.tmax.
+inline bool anyHit(const WideBvh& bvh, const WideBvhPacket& packet, int lane, const WideRay& r) {
+  const uint32_t prim = packet.prim[lane];
   float t, b1, b2;
   if (prim < bvh.triangleCount) {
-    return intersectTriangle(r.wray, leaf.p0, leaf.p1, leaf.p2, r.ray.tmin, r.ray.tmax, t, b1, b2);
+    return intersectTriangle(r.wray, packet.vertex(0, lane), packet.vertex(1, lane), packet.vertex(2, lane),
+                             r.ray.tmin, r.ray.tmax, t, b1, b2);
   }
   const Sphere& s = bvh.geometry->spheres[prim - bvh.triangleCount];
   return intersectSphere(r.ray, s.center, s.radius, r.ray.tmin, r.ray.tmax, t);
 }
 
-// A postponed child: a node (count == 0) or a leaf's slots [ref, ref + count).
+// A postponed child: a node (count == 0) or a leaf's `count` primitives in packets from `ref`.
 struct StackEntry {
   uint32_t ref;
   uint32_t count;
@@ -501,9 +563,10 @@ bool traverse(const WideBvh& bvh, const WideRay& r, Hit& hit, QueryCounters& cou
         for (unsigned m = mask; m != 0; m &= m - 1) {
           const int c = std::countr_zero(m);
           const char* p = node.count[c] == 0 ? reinterpret_cast<const char*>(&nodes[node.child[c]])
-                                             : reinterpret_cast<const char*>(&bvh.prims[node.child[c]]);
+                                             : reinterpret_cast<const char*>(&bvh.packets[node.child[c]]);
           _mm_prefetch(p, _MM_HINT_T0);
           _mm_prefetch(p + 64, _MM_HINT_T0);
+          if (node.count[c] != 0) _mm_prefetch(p + 128, _MM_HINT_T0);  // (a packet's third line)
         }
         if ((mask & (mask - 1)) == 0) {  // one child: no stack
           const int a = std::countr_zero(mask);
@@ -549,14 +612,20 @@ bool traverse(const WideBvh& bvh, const WideRay& r, Hit& hit, QueryCounters& cou
       }
     } else {
       primsSeen += count;
-      for (uint32_t s = ref, end = ref + count; s < end; ++s) {
-        if constexpr (AnyHit) {
-          anything = anyHit(bvh, s, r);
-          if (anything) break;
-        } else if (closerHit(bvh, s, r, hit)) {
-          anything = true;
-          tLimit = r.cullLimit(hit.t);
-          tLimit4 = r.farLimit(hit.t);
+      const WideBvhPacket* packet = &bvh.packets[ref];
+      for (uint32_t base = 0; base < count && !(AnyHit && anything); base += 4, ++packet) {
+        // Closest hit: lanes up to one float beyond hit.t (the tie rule's bound) stay candidates.
+        const __m128 tmax = _mm_set1_ps(AnyHit ? r.ray.tmax : nextFloatUp(hit.t));
+        for (unsigned m = candidateLanes(r, *packet, tmax) & usedLanes(count, base); m != 0; m &= m - 1) {
+          const int lane = std::countr_zero(m);
+          if constexpr (AnyHit) {
+            anything = anyHit(bvh, *packet, lane, r);
+            if (anything) break;
+          } else if (closerHit(bvh, *packet, lane, r, hit)) {
+            anything = true;
+            tLimit = r.cullLimit(hit.t);
+            tLimit4 = r.farLimit(hit.t);
+          }
         }
       }
       if (AnyHit && anything) break;
@@ -662,24 +731,10 @@ WideBvh buildWideBvh(const Geometry& geometry, const WideBvhSettings& settings) 
   bvh.sceneCentre = sceneBox.center();
   bvh.sceneRadius = 0.5f * sceneBox.diagonal();
   bvh.nodes.reserve(builder.nodeCount());  // exactly: flatten() never reallocates
-  flatten(builder.nodes(), rootIndex, 0, sceneBox.halfSurfaceArea(), bvh);
+  bvh.packets.reserve(n);                   // at most one packet per primitive
+  flatten(builder.nodes(), rootIndex, 0, sceneBox.halfSurfaceArea(), prims.get(), geometry, bvh);
+  bvh.packets.shrink_to_fit();
   if (!(sceneBox.halfSurfaceArea() > 0.0f)) bvh.sahCost = static_cast<double>(n);
-
-  bvh.prims.resize(n);
-  tbb::parallel_for(tbb::blocked_range<uint32_t>(0, n, 4096), [&](const tbb::blocked_range<uint32_t>& range) {
-    for (uint32_t s = range.begin(); s < range.end(); ++s) {
-      const uint32_t prim = prims[s].prim();
-      WideBvhLeafPrim& leaf = bvh.prims[s];
-      leaf.prim = prim;
-      leaf.p0 = leaf.p1 = leaf.p2 = Vec3(0.0f);
-      if (prim < bvh.triangleCount) {
-        const glm::uvec3& tri = geometry.triangles[prim];
-        leaf.p0 = geometry.positions[tri.x];
-        leaf.p1 = geometry.positions[tri.y];
-        leaf.p2 = geometry.positions[tri.z];
-      }
-    }
-  });
   return bvh;
 }
 

@@ -15,9 +15,11 @@
 //
 // Query: the four child boxes of a node are tested at once (SSE, x86-64's
 // baseline: no AVX needed), the children hit are visited nearest first, and
-// leaves test primitives with the framework's own watertight triangle test and
-// sphere test, so hits are bit-identical to brute force (`none`): the same t
-// and, on equal t, the same (smallest) primitive id.
+// leaves test four triangles at once with the very arithmetic of the
+// framework's watertight triangle test (Woop et al. 2013), and the lanes it
+// cannot rule out -- hits, edge cases, spheres -- with that test and the
+// sphere test themselves, so hits are bit-identical to brute force (`none`):
+// the same t and, on equal t, the same (smallest) primitive id.
 #pragma once
 
 #include <cstdint>
@@ -37,8 +39,8 @@ namespace ll {
 struct alignas(64) WideBvhNode {
   static constexpr uint32_t kEmpty = 0xffffffffu;
   float box[2][3][4];
-  uint32_t child[4];  // count == 0: index of an interior node; count > 0: first leaf slot
-  uint32_t count[4];  // primitives of a leaf child, in slots [child, child + count); 0 = not a leaf
+  uint32_t child[4];  // count == 0: index of an interior node; count > 0: its first packet
+  uint32_t count[4];  // primitives of a leaf child, in packets [child, child + ceil(count / 4)); 0 = not a leaf
   bool used(int i) const { return child[i] != kEmpty; }
   bool isLeaf(int i) const { return count[i] > 0; }
   Bounds3 childBounds(int i) const {
@@ -50,13 +52,20 @@ struct alignas(64) WideBvhNode {
 };
 static_assert(sizeof(WideBvhNode) == 128, "a 4-wide node fills two cache lines");
 
-// One leaf slot: the primitive's id and, for a triangle, its vertices (world
-// space: the very floats of the Geometry, so the triangle test gives the same
-// t as brute force), side by side so a leaf is one contiguous run of memory.
-struct WideBvhLeafPrim {
-  Vec3 p0, p1, p2;  // unused for other primitives than triangles
-  uint32_t prim;    // id in the Geometry
+// Up to four primitives of one leaf, structure-of-arrays like the nodes, so
+// one SSE instruction handles one coordinate of four triangles: the lanes'
+// ids and, for a triangle, its vertices (world space: the very floats of the
+// Geometry, so the triangle test gives the same t as brute force). A lane
+// holding another primitive than a triangle has all vertices 0; an unused lane
+// has id kEmpty. 160 bytes; a leaf of n primitives is ceil(n / 4) packets side
+// by side, its first n lanes in order.
+struct alignas(32) WideBvhPacket {
+  static constexpr uint32_t kEmpty = 0xffffffffu;
+  float v[3][3][4];   // v[vertex][axis][lane]
+  uint32_t prim[4];   // id in the Geometry, per lane
+  Vec3 vertex(int k, int lane) const { return Vec3(v[k][0][lane], v[k][1][lane], v[k][2][lane]); }
 };
+static_assert(sizeof(WideBvhPacket) == 160, "four triangles and their ids");
 
 struct WideBvhSettings {
   int maxLeaf = 4;  // most primitives in one leaf (1..16); smaller leaves are made when the SAH says so
@@ -67,19 +76,19 @@ struct WideBvhSettings {
 // kWideBvhMaxDepth - 32 splits): a 4-wide tree is never deeper.
 constexpr int kWideBvhMaxDepth = 96;
 
-// The built structure. Every primitive sits in exactly one leaf slot; a
-// leaf's slots are contiguous, and slots follow the tree's depth-first order.
+// The built structure. Every primitive sits in exactly one packet lane; a
+// leaf's packets are contiguous, and packets follow the tree's depth-first order.
 struct WideBvh {
   const Geometry* geometry = nullptr;
   std::vector<WideBvhNode> nodes;          // nodes[0] is the root (depth-first order); empty: no primitives
-  std::vector<WideBvhLeafPrim> prims;      // leaf slot -> primitive (id, and vertices if a triangle)
+  std::vector<WideBvhPacket> packets;      // the leaves' primitives (ids, and vertices of triangles)
   uint32_t triangleCount = 0;              // primitive ids below this are triangles
   Vec3 sceneCentre{0.0f};                  // a sphere around every primitive (world space), for rounding bounds
   float sceneRadius = 0.0f;
   int depth = 0;         // edges on the longest root-to-leaf path (a leaf child of the root: 1)
   double sahCost = 0.0;  // expected cost per ray: one unit per 4-wide node visited and per primitive tested
   size_t memoryBytes() const {
-    return nodes.capacity() * sizeof(WideBvhNode) + prims.capacity() * sizeof(WideBvhLeafPrim);
+    return nodes.capacity() * sizeof(WideBvhNode) + packets.capacity() * sizeof(WideBvhPacket);
   }
 };
 

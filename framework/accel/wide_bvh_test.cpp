@@ -379,14 +379,19 @@ TEST(WideBvh, WellFormedStructure) {
         ++leaves;
         EXPECT_LE(node.count[i], static_cast<uint32_t>(maxLeaf));
         const Bounds3 box = node.childBounds(i);
-        for (uint32_t s = node.child[i]; s < node.child[i] + node.count[i]; ++s) {
-          const uint32_t prim = bvh.prims[s].prim;
+        for (uint32_t s = 0; s < (node.count[i] + 3) / 4 * 4; ++s) {
+          const WideBvhPacket& packet = bvh.packets[node.child[i] + s / 4];
+          const uint32_t prim = packet.prim[s % 4];
+          if (s >= node.count[i]) {  // the last packet's unused lanes
+            EXPECT_EQ(prim, WideBvhPacket::kEmpty);
+            continue;
+          }
           ++seen[prim];
           const Bounds3 pb = g.bounds(prim);
           EXPECT_TRUE(contains(box, pb));
-          if (g.isTriangle(prim)) {
-            EXPECT_EQ(bvh.prims[s].p1, g.positions[g.triangles[prim].y]);
-          }
+          for (int k = 0; k < 3; ++k)
+            EXPECT_EQ(packet.vertex(k, int(s % 4)),
+                      g.isTriangle(prim) ? g.positions[g.triangles[prim][k]] : Vec3(0.0f));
         }
       }
     }
@@ -417,8 +422,9 @@ TEST(WideBvh, TheParallelBuildIsDeterministic) {
   ASSERT_EQ(a.nodes.size(), b.nodes.size());
   for (size_t i = 0; i < a.nodes.size(); ++i)
     ASSERT_EQ(std::memcmp(&a.nodes[i], &b.nodes[i], sizeof(WideBvhNode)), 0) << "node " << i;
-  ASSERT_EQ(a.prims.size(), b.prims.size());
-  for (size_t s = 0; s < a.prims.size(); ++s) ASSERT_EQ(a.prims[s].prim, b.prims[s].prim) << "slot " << s;
+  ASSERT_EQ(a.packets.size(), b.packets.size());
+  for (size_t i = 0; i < a.packets.size(); ++i)
+    ASSERT_EQ(std::memcmp(&a.packets[i], &b.packets[i], sizeof(WideBvhPacket)), 0) << "packet " << i;
 }
 
 }  // namespace
