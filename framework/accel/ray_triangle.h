@@ -6,6 +6,8 @@
 // (tasks/framework_answer.h).
 #pragma once
 
+#include <xmmintrin.h>  // SSE (x86-64 baseline): four triangles at once
+
 #include <cmath>
 
 #include "core/ray.h"
@@ -28,6 +30,32 @@ struct WatertightRay {
 // normal that does not exist; the scene loaders drop them as well.
 bool intersectTriangle(const WatertightRay& r, const Vec3& p0, const Vec3& p1, const Vec3& p2, float tmin,
                        float tmax, float& t, float& b1, float& b2);
+
+// Four triangles side by side for the four-lane test: v[vertex][axis][lane]
+// (world space), 16-byte aligned. A lane without a triangle holds zeros.
+struct alignas(16) Triangles4 {
+  float v[3][3][4];
+};
+
+// WatertightRay's constants broadcast to four lanes, in the test's own frame.
+struct WatertightRay4 {
+  int kx, ky, kz;
+  __m128 origin[3];  // origin[kx], origin[ky], origin[kz]
+  __m128 sx, sy, sz;
+  __m128 tmin;
+  WatertightRay4(const WatertightRay& r, float rayTmin)
+      : kx(r.kx), ky(r.ky), kz(r.kz),
+        origin{_mm_set1_ps(components(r.origin)[r.kx]), _mm_set1_ps(components(r.origin)[r.ky]),
+               _mm_set1_ps(components(r.origin)[r.kz])},
+        sx(_mm_set1_ps(r.sx)), sy(_mm_set1_ps(r.sy)), sz(_mm_set1_ps(r.sz)), tmin(_mm_set1_ps(rayTmin)) {}
+};
+
+// The lanes of `tris` that intersectTriangle() may find hit in (tmin, tmax), as a bit mask: it runs that
+// test's float operations in the same order on four triangles at once (x86-64 has no FMA to contract
+// them into), so a lane left out is one intersectTriangle() rejects. Lanes in the mask still need
+// intersectTriangle(): they are the hits and the edge cases it redoes in double -- among them every lane
+// whose vertices are all 0 (no triangle). tmax: the largest bound the caller will test with.
+unsigned triangleCandidates4(const WatertightRay4& r, const Triangles4& tris, __m128 tmax);
 
 #if !LIGHTLAB_STUDENT_TREE  // A2.3's answer: object code only in the student tree
 LIGHTLAB_ANSWER_INLINE WatertightRay::WatertightRay(const Ray& ray) : origin(ray.origin) {
@@ -74,6 +102,30 @@ LIGHTLAB_ANSWER_INLINE bool intersectTriangle(const WatertightRay& r, const Vec3
   b1 = v * invDet;
   b2 = w * invDet;
   return true;
+}
+
+LIGHTLAB_ANSWER_INLINE unsigned triangleCandidates4(const WatertightRay4& r, const Triangles4& tris, __m128 tmax) {
+  LIGHTLAB_ANSWER_GUARD("A2.3", "ll::triangleCandidates4 (the framework's watertight triangle test)");
+  __m128 x[3], y[3], z[3];  // the vertices relative to the origin, sheared: ax, ay, az of intersectTriangle()
+  for (int k = 0; k < 3; ++k) {
+    const __m128 dz = _mm_sub_ps(_mm_load_ps(tris.v[k][r.kz]), r.origin[2]);
+    x[k] = _mm_sub_ps(_mm_sub_ps(_mm_load_ps(tris.v[k][r.kx]), r.origin[0]), _mm_mul_ps(r.sx, dz));
+    y[k] = _mm_sub_ps(_mm_sub_ps(_mm_load_ps(tris.v[k][r.ky]), r.origin[1]), _mm_mul_ps(r.sy, dz));
+    z[k] = _mm_mul_ps(r.sz, dz);
+  }
+  const __m128 u = _mm_sub_ps(_mm_mul_ps(x[2], y[1]), _mm_mul_ps(y[2], x[1]));
+  const __m128 v = _mm_sub_ps(_mm_mul_ps(x[0], y[2]), _mm_mul_ps(y[0], x[2]));
+  const __m128 w = _mm_sub_ps(_mm_mul_ps(x[1], y[0]), _mm_mul_ps(y[1], x[0]));
+  const __m128 zero = _mm_setzero_ps();
+  const __m128 onEdge = _mm_or_ps(_mm_or_ps(_mm_cmpeq_ps(u, zero), _mm_cmpeq_ps(v, zero)), _mm_cmpeq_ps(w, zero));
+  const __m128 anyNeg = _mm_or_ps(_mm_or_ps(_mm_cmplt_ps(u, zero), _mm_cmplt_ps(v, zero)), _mm_cmplt_ps(w, zero));
+  const __m128 anyPos = _mm_or_ps(_mm_or_ps(_mm_cmpgt_ps(u, zero), _mm_cmpgt_ps(v, zero)), _mm_cmpgt_ps(w, zero));
+  const __m128 det = _mm_add_ps(_mm_add_ps(u, v), w);
+  const __m128 tScaled = _mm_add_ps(_mm_add_ps(_mm_mul_ps(u, z[0]), _mm_mul_ps(v, z[1])), _mm_mul_ps(w, z[2]));
+  const __m128 t = _mm_mul_ps(tScaled, _mm_div_ps(_mm_set1_ps(1.0f), det));  // (det 0: inf or NaN, out of range)
+  const __m128 inRange = _mm_and_ps(_mm_cmpgt_ps(t, r.tmin), _mm_cmplt_ps(t, tmax));
+  const __m128 hit = _mm_andnot_ps(_mm_and_ps(anyNeg, anyPos), inRange);
+  return static_cast<unsigned>(_mm_movemask_ps(_mm_or_ps(hit, onEdge)));
 }
 #endif
 

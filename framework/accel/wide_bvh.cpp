@@ -340,7 +340,7 @@ uint32_t packLeaf(const PrimRef* prims, uint32_t begin, uint32_t count, const Ge
       packet.prim[lane] = prim;
       for (int k = 0; k < 3; ++k) {
         const Vec3 p = prim < out.triangleCount ? geometry.positions[geometry.triangles[prim][k]] : Vec3(0.0f);
-        for (int a = 0; a < 3; ++a) packet.v[k][a][lane] = p[a];
+        for (int a = 0; a < 3; ++a) packet.triangles.v[k][a][lane] = p[a];
       }
     }
   }
@@ -390,8 +390,7 @@ struct WideRay {
   __m128 ix, iy, iz;        // 1/dir, broadcast (near planes); +-infinity for zero components
   __m128 fx, fy, fz;        // 1/dir * kFarScale (far planes)
   __m128 tmin;              // ray.tmin, broadcast
-  __m128 po[3];             // origin[kx], origin[ky], origin[kz] of wray, broadcast (the triangle test's frame)
-  __m128 shx, shy, shz;     // wray.sx, wray.sy, wray.sz, broadcast
+  WatertightRay4 wray4;     // wray on four lanes
   __m128 slack;             // tSlack, broadcast
   int sideX, sideY, sideZ;  // box side of the slab's near plane: 1 (max) where dir < 0 (or -0)
   // The triangle test's t and a box's plane distances round differently, by up to a few ulps of the
@@ -399,7 +398,7 @@ struct WideRay {
   // outside [tmin, tLimit], by tSlack. As in assignments/a4_acceleration/bvh_ray_tests.h, there with
   // |o - c| and 1/|dir|; here with their upper bounds |o - c|_1 and 1/max|dir_i| = |wray.sz|.
   float tSlack;
-  WideRay(const Ray& r, const WideBvh& bvh) : ray(r), wray(r) {
+  WideRay(const Ray& r, const WideBvh& bvh) : ray(r), wray(r), wray4(wray, r.tmin) {
     const __m128 inv = _mm_div_ps(_mm_set1_ps(1.0f), _mm_setr_ps(r.dir.x, r.dir.y, r.dir.z, 1.0f));
     alignas(16) float i[4], f[4];
     _mm_store_ps(i, inv);
@@ -421,13 +420,6 @@ struct WideRay {
              std::abs(wray.sz);
     tmin = _mm_set1_ps(r.tmin);
     slack = _mm_set1_ps(tSlack);
-    const auto o = components(r.origin);
-    po[0] = _mm_set1_ps(o[wray.kx]);
-    po[1] = _mm_set1_ps(o[wray.ky]);
-    po[2] = _mm_set1_ps(o[wray.kz]);
-    shx = _mm_set1_ps(wray.sx);
-    shy = _mm_set1_ps(wray.sy);
-    shz = _mm_set1_ps(wray.sz);
   }
   // Postponed children entered beyond this cannot hold a hit at distance t.
   float cullLimit(float t) const { return t + tSlack; }
@@ -464,35 +456,6 @@ inline float nextFloatUp(float t) {
   if (t == 0.0f) return std::numeric_limits<float>::denorm_min();
   const uint32_t bits = std::bit_cast<uint32_t>(t);
   return std::bit_cast<float>(t > 0.0f ? bits + 1 : bits - 1);
-}
-
-// The lanes of `packet` that intersectTriangle() might find hit in (ray.tmin, tmax): it runs the test's
-// own float operations in the same order on four triangles at once (x86-64 has no FMA to contract them
-// into), so a lane it rules out is one the scalar test rejects. Kept for the scalar test: lanes where an
-// edge function is 0 (the test redoes them in double) -- among them every non-triangle, whose vertices
-// are all 0. tmax: the largest bound the caller may test with.
-inline unsigned candidateLanes(const WideRay& r, const WideBvhPacket& packet, __m128 tmax) {
-  const int kx = r.wray.kx, ky = r.wray.ky, kz = r.wray.kz;
-  __m128 x[3], y[3], z[3];  // the vertices relative to the origin, sheared (as ax, ay, az of the test)
-  for (int k = 0; k < 3; ++k) {
-    const __m128 dz = _mm_sub_ps(_mm_load_ps(packet.v[k][kz]), r.po[2]);
-    x[k] = _mm_sub_ps(_mm_sub_ps(_mm_load_ps(packet.v[k][kx]), r.po[0]), _mm_mul_ps(r.shx, dz));
-    y[k] = _mm_sub_ps(_mm_sub_ps(_mm_load_ps(packet.v[k][ky]), r.po[1]), _mm_mul_ps(r.shy, dz));
-    z[k] = _mm_mul_ps(r.shz, dz);
-  }
-  const __m128 u = _mm_sub_ps(_mm_mul_ps(x[2], y[1]), _mm_mul_ps(y[2], x[1]));
-  const __m128 v = _mm_sub_ps(_mm_mul_ps(x[0], y[2]), _mm_mul_ps(y[0], x[2]));
-  const __m128 w = _mm_sub_ps(_mm_mul_ps(x[1], y[0]), _mm_mul_ps(y[1], x[0]));
-  const __m128 zero = _mm_setzero_ps();
-  const __m128 onEdge = _mm_or_ps(_mm_or_ps(_mm_cmpeq_ps(u, zero), _mm_cmpeq_ps(v, zero)), _mm_cmpeq_ps(w, zero));
-  const __m128 anyNeg = _mm_or_ps(_mm_or_ps(_mm_cmplt_ps(u, zero), _mm_cmplt_ps(v, zero)), _mm_cmplt_ps(w, zero));
-  const __m128 anyPos = _mm_or_ps(_mm_or_ps(_mm_cmpgt_ps(u, zero), _mm_cmpgt_ps(v, zero)), _mm_cmpgt_ps(w, zero));
-  const __m128 det = _mm_add_ps(_mm_add_ps(u, v), w);
-  const __m128 tScaled = _mm_add_ps(_mm_add_ps(_mm_mul_ps(u, z[0]), _mm_mul_ps(v, z[1])), _mm_mul_ps(w, z[2]));
-  const __m128 t = _mm_mul_ps(tScaled, _mm_div_ps(_mm_set1_ps(1.0f), det));  // (det 0: inf or NaN, out of range)
-  const __m128 inRange = _mm_and_ps(_mm_cmpgt_ps(t, r.tmin), _mm_cmplt_ps(t, tmax));
-  const __m128 hit = _mm_andnot_ps(_mm_and_ps(anyNeg, anyPos), inRange);
-  return static_cast<unsigned>(_mm_movemask_ps(_mm_or_ps(hit, onEdge)));
 }
 
 // The lanes of a leaf's packet `base / 4` that hold one of its `count` primitives.
@@ -616,7 +579,7 @@ bool traverse(const WideBvh& bvh, const WideRay& r, Hit& hit, QueryCounters& cou
       for (uint32_t base = 0; base < count && !(AnyHit && anything); base += 4, ++packet) {
         // Closest hit: lanes up to one float beyond hit.t (the tie rule's bound) stay candidates.
         const __m128 tmax = _mm_set1_ps(AnyHit ? r.ray.tmax : nextFloatUp(hit.t));
-        for (unsigned m = candidateLanes(r, *packet, tmax) & usedLanes(count, base); m != 0; m &= m - 1) {
+        for (unsigned m = triangleCandidates4(r.wray4, packet->triangles, tmax) & usedLanes(count, base); m != 0; m &= m - 1) {
           const int lane = std::countr_zero(m);
           if constexpr (AnyHit) {
             anything = anyHit(bvh, *packet, lane, r);

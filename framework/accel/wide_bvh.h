@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "accel/accelerator.h"
+#include "accel/ray_triangle.h"
 #include "core/math.h"
 #include "scene/geometry.h"
 
@@ -61,9 +62,11 @@ static_assert(sizeof(WideBvhNode) == 128, "a 4-wide node fills two cache lines")
 // by side, its first n lanes in order.
 struct alignas(32) WideBvhPacket {
   static constexpr uint32_t kEmpty = 0xffffffffu;
-  float v[3][3][4];   // v[vertex][axis][lane]
-  uint32_t prim[4];   // id in the Geometry, per lane
-  Vec3 vertex(int k, int lane) const { return Vec3(v[k][0][lane], v[k][1][lane], v[k][2][lane]); }
+  Triangles4 triangles;  // v[vertex][axis][lane]
+  uint32_t prim[4];      // id in the Geometry, per lane
+  Vec3 vertex(int k, int lane) const {
+    return Vec3(triangles.v[k][0][lane], triangles.v[k][1][lane], triangles.v[k][2][lane]);
+  }
 };
 static_assert(sizeof(WideBvhPacket) == 160, "four triangles and their ids");
 
