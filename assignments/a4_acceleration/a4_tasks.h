@@ -81,9 +81,11 @@ bool occludedOctree(const Octree& tree, const Ray& ray, QueryCounters& counters)
 // distance to the plane, dot(normal, origin) - offset, says which child it
 // starts in (below when negative), and the ray crosses the plane at tSplit =
 // -distance / dot(normal, dir) -- +-infinity for a ray parallel to it, NaN
-// for a ray lying in it (both children, the whole interval). Otherwise the
-// walk is A4.3's: front to back, a stack of kBspStackSize entries, stop once
-// the closest hit lies inside the current cell (allow r.tSlack).
+// for a ray lying in it (both children, the whole interval); where
+// node.axis() names an axis the plane is x[axis] = offset (optional fast
+// path). Otherwise the walk is A4.3's: front to back, a stack of
+// kBspStackSize entries, stop once the closest hit lies inside the current
+// cell (allow r.tSlack).
 bool intersectBsp(const BspTree& tree, const Ray& ray, Hit& hit, QueryCounters& counters);
 
 // A4.5 (any hit): whether anything is hit with ray.tmin < t < ray.tmax.

@@ -913,6 +913,16 @@ TEST(A4_Bsp, CutsByTrianglePlanesAndItsCellsTileTheScene) {
   EXPECT_GT(info.axisPlanes, 0u);
   const size_t interior = info.trianglePlanes + info.axisPlanes;
   EXPECT_EQ(info.nodeCount, 2 * interior + 1);  // a binary tree
+  size_t axisNodes = 0;  // interior nodes that say their plane is x[axis] = offset, and are
+  for (const a4::BspNode& n : tree.nodes) {
+    if (n.isLeaf() || n.axis() == a4::BspNode::kAnyPlane) continue;
+    ++axisNodes;
+    Vec3 unit(0.0f);
+    unit[n.axis()] = 1.0f;
+    EXPECT_EQ(n.normal, unit);
+  }
+  EXPECT_GE(axisNodes, info.axisPlanes);  // (a triangle's plane may be one too)
+  EXPECT_LT(axisNodes, interior);
   std::vector<int> seen(g.primitiveCount(), 0);
   for (const a4::BspNode& n : tree.nodes)
     if (n.isLeaf())

@@ -37,16 +37,24 @@ constexpr size_t kBspMaxNodes = size_t{1} << 30;
 // node, the child above it node aboveChild(). Leaf: primitives in slots
 // [first(), first() + count()). Cells are closed: both children include the plane.
 struct BspNode {
+  static constexpr int kAnyPlane = 3;  // axis() of a plane not perpendicular to an axis
+
   Vec3 normal{0.0f};
   float offset = 0.0f;
   uint32_t word = 0;  // interior: aboveChild; leaf: first slot
-  uint32_t bits = 0;  // bit 0: leaf; leaf: the rest count
+  uint32_t bits = 0;  // bit 0: leaf; the rest: leaf, count; interior, axis()
 
   static BspNode interior(const Vec3& normal, float offset, uint32_t aboveChild) {
-    return {normal, offset, aboveChild, 0u};
+    uint32_t axis = kAnyPlane;
+    for (int a = 0; a < 3; ++a)
+      if (normal[a] == 1.0f && normal[(a + 1) % 3] == 0.0f && normal[(a + 2) % 3] == 0.0f) axis = static_cast<uint32_t>(a);
+    return {normal, offset, aboveChild, axis << 1};
   }
   static BspNode leafNode(uint32_t first, uint32_t count) { return {Vec3(0.0f), 0.0f, first, (count << 1) | 1u}; }
   bool isLeaf() const { return (bits & 1u) != 0; }
+  // Interior: the axis a whose plane x[a] = offset this is (normal the unit vector along a), or kAnyPlane.
+  // Such a plane's crossing is the KD-tree's, (offset - origin[a]) / dir[a]: no dot products.
+  int axis() const { return static_cast<int>(bits >> 1); }
   uint32_t aboveChild() const { return word; }
   uint32_t first() const { return word; }
   uint32_t count() const { return bits >> 1; }

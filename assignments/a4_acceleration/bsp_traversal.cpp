@@ -37,10 +37,19 @@ bool traverseBsp(const BspTree& tree, const TraversalRay& r, Hit& hit, QueryCoun
     if (!node.isLeaf()) {
       // The origin's signed distance to the plane and the direction's rate
       // across it: the ray crosses at tSplit = -distance / rate. Parallel
-      // rays never cross (+-infinity) or lie in the plane (NaN).
-      const float distance = glm::dot(node.normal, r.ray.origin) - node.offset;
-      const float rate = glm::dot(node.normal, r.ray.dir);
-      const float tSplit = -distance / rate;
+      // rays never cross (+-infinity) or lie in the plane (NaN). An
+      // axis-aligned plane needs only its axis' components (as A4.3).
+      const int axis = node.axis();
+      float distance, rate, tSplit;
+      if (axis != BspNode::kAnyPlane) {
+        distance = r.ray.origin[axis] - node.offset;
+        rate = r.ray.dir[axis];
+        tSplit = (node.offset - r.ray.origin[axis]) * r.invDir[axis];
+      } else {
+        distance = glm::dot(node.normal, r.ray.origin) - node.offset;
+        rate = glm::dot(node.normal, r.ray.dir);
+        tSplit = -distance / rate;
+      }
       const bool belowFirst = distance < 0.0f || (distance == 0.0f && rate <= 0.0f);
       const uint32_t first = belowFirst ? current + 1 : node.aboveChild();
       const uint32_t second = belowFirst ? node.aboveChild() : current + 1;
