@@ -50,12 +50,20 @@ struct WatertightRay4 {
         sx(_mm_set1_ps(r.sx)), sy(_mm_set1_ps(r.sy)), sz(_mm_set1_ps(r.sz)), tmin(_mm_set1_ps(rayTmin)) {}
 };
 
-// The lanes of `tris` that intersectTriangle() may find hit in (tmin, tmax), as a bit mask: it runs that
-// test's float operations in the same order on four triangles at once (x86-64 has no FMA to contract
-// them into), so a lane left out is one intersectTriangle() rejects. Lanes in the mask still need
-// intersectTriangle(): they are the hits and the edge cases it redoes in double -- among them every lane
-// whose vertices are all 0 (no triangle). tmax: the largest bound the caller will test with.
-unsigned triangleCandidates4(const WatertightRay4& r, const Triangles4& tris, __m128 tmax);
+// What the four-lane test found, as bit masks over the lanes.
+struct TriangleHits4 {
+  unsigned hit = 0;        // hits in (tmin, tmax): t, b1, b2 below, as intersectTriangle() gives them
+  unsigned undecided = 0;  // an edge function rounded to 0: intersectTriangle() decides (in double)
+  alignas(16) float t[4], b1[4], b2[4];
+};
+
+// intersectTriangle() on four triangles at once: its float operations in the same order (x86-64 has no
+// FMA to contract them into), so a `hit` lane is a hit it finds, with the very same t, b1 and b2, and a
+// lane in neither mask is one it rejects. Every lane whose vertices are all 0 is undecided (the caller's
+// empty lanes and other primitives). Precondition: no lane holds a triangle with collinear vertices
+// (cross(p1 - p0, p2 - p0) == 0, which intersectTriangle() rejects): store those as all 0.
+// tmax: per lane, the bound the caller tests against.
+void intersectTriangles4(const WatertightRay4& r, const Triangles4& tris, __m128 tmax, TriangleHits4& out);
 
 #if !LIGHTLAB_STUDENT_TREE  // A2.3's answer: object code only in the student tree
 LIGHTLAB_ANSWER_INLINE WatertightRay::WatertightRay(const Ray& ray) : origin(ray.origin) {
@@ -67,9 +75,12 @@ LIGHTLAB_ANSWER_INLINE WatertightRay::WatertightRay(const Ray& ray) : origin(ray
   const bool flip = d[kz] < 0.0f;  // keep the winding
   kx = flip ? last : next;
   ky = flip ? next : last;
-  sx = d[kx] / d[kz];
-  sy = d[ky] / d[kz];
-  sz = 1.0f / d[kz];
+  // sx = d[kx] / d[kz], sy = d[ky] / d[kz], sz = 1 / d[kz]: one SSE division (each lane rounded as divss).
+  alignas(16) float q[4];
+  _mm_store_ps(q, _mm_div_ps(_mm_setr_ps(d[kx], d[ky], 1.0f, 1.0f), _mm_set1_ps(d[kz])));
+  sx = q[0];
+  sy = q[1];
+  sz = q[2];
 }
 
 LIGHTLAB_ANSWER_INLINE bool intersectTriangle(const WatertightRay& r, const Vec3& p0, const Vec3& p1, const Vec3& p2,
@@ -104,8 +115,9 @@ LIGHTLAB_ANSWER_INLINE bool intersectTriangle(const WatertightRay& r, const Vec3
   return true;
 }
 
-LIGHTLAB_ANSWER_INLINE unsigned triangleCandidates4(const WatertightRay4& r, const Triangles4& tris, __m128 tmax) {
-  LIGHTLAB_ANSWER_GUARD("A2.3", "ll::triangleCandidates4 (the framework's watertight triangle test)");
+LIGHTLAB_ANSWER_INLINE void intersectTriangles4(const WatertightRay4& r, const Triangles4& tris, __m128 tmax,
+                                                TriangleHits4& out) {
+  LIGHTLAB_ANSWER_GUARD("A2.3", "ll::intersectTriangles4 (the framework's watertight triangle test)");
   __m128 x[3], y[3], z[3];  // the vertices relative to the origin, sheared: ax, ay, az of intersectTriangle()
   for (int k = 0; k < 3; ++k) {
     const __m128 dz = _mm_sub_ps(_mm_load_ps(tris.v[k][r.kz]), r.origin[2]);
@@ -122,10 +134,15 @@ LIGHTLAB_ANSWER_INLINE unsigned triangleCandidates4(const WatertightRay4& r, con
   const __m128 anyPos = _mm_or_ps(_mm_or_ps(_mm_cmpgt_ps(u, zero), _mm_cmpgt_ps(v, zero)), _mm_cmpgt_ps(w, zero));
   const __m128 det = _mm_add_ps(_mm_add_ps(u, v), w);
   const __m128 tScaled = _mm_add_ps(_mm_add_ps(_mm_mul_ps(u, z[0]), _mm_mul_ps(v, z[1])), _mm_mul_ps(w, z[2]));
-  const __m128 t = _mm_mul_ps(tScaled, _mm_div_ps(_mm_set1_ps(1.0f), det));  // (det 0: inf or NaN, out of range)
+  const __m128 invDet = _mm_div_ps(_mm_set1_ps(1.0f), det);  // (det 0 off an edge: mixed signs, rejected)
+  const __m128 t = _mm_mul_ps(tScaled, invDet);
   const __m128 inRange = _mm_and_ps(_mm_cmpgt_ps(t, r.tmin), _mm_cmplt_ps(t, tmax));
-  const __m128 hit = _mm_andnot_ps(_mm_and_ps(anyNeg, anyPos), inRange);
-  return static_cast<unsigned>(_mm_movemask_ps(_mm_or_ps(hit, onEdge)));
+  const __m128 hit = _mm_andnot_ps(_mm_or_ps(_mm_and_ps(anyNeg, anyPos), onEdge), inRange);
+  out.hit = static_cast<unsigned>(_mm_movemask_ps(hit));
+  out.undecided = static_cast<unsigned>(_mm_movemask_ps(onEdge));
+  _mm_store_ps(out.t, t);
+  _mm_store_ps(out.b1, _mm_mul_ps(v, invDet));
+  _mm_store_ps(out.b2, _mm_mul_ps(w, invDet));
 }
 #endif
 

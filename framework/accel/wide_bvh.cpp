@@ -338,10 +338,14 @@ uint32_t packLeaf(const PrimRef* prims, uint32_t begin, uint32_t count, const Ge
     for (int lane = 0; lane < 4; ++lane) {
       const uint32_t prim = base + lane < count ? prims[begin + base + lane].prim() : WideBvhPacket::kEmpty;
       packet.prim[lane] = prim;
-      for (int k = 0; k < 3; ++k) {
-        const Vec3 p = prim < out.triangleCount ? geometry.positions[geometry.triangles[prim][k]] : Vec3(0.0f);
-        for (int a = 0; a < 3; ++a) packet.triangles.v[k][a][lane] = p[a];
+      // A triangle with collinear vertices (never hit) is stored as all 0 too: intersectTriangles4()'s precondition.
+      Vec3 p[3] = {Vec3(0.0f), Vec3(0.0f), Vec3(0.0f)};
+      if (prim < out.triangleCount) {
+        for (int k = 0; k < 3; ++k) p[k] = geometry.positions[geometry.triangles[prim][k]];
+        if (glm::cross(p[1] - p[0], p[2] - p[0]) == Vec3(0.0f)) p[0] = p[1] = p[2] = Vec3(0.0f);
       }
+      for (int k = 0; k < 3; ++k)
+        for (int a = 0; a < 3; ++a) packet.triangles.v[k][a][lane] = p[k][a];
     }
   }
   return first;
@@ -579,16 +583,37 @@ bool traverse(const WideBvh& bvh, const WideRay& r, Hit& hit, QueryCounters& cou
       for (uint32_t base = 0; base < count && !(AnyHit && anything); base += 4, ++packet) {
         // Closest hit: lanes up to one float beyond hit.t (the tie rule's bound) stay candidates.
         const __m128 tmax = _mm_set1_ps(AnyHit ? r.ray.tmax : nextFloatUp(hit.t));
-        for (unsigned m = triangleCandidates4(r.wray4, packet->triangles, tmax) & usedLanes(count, base); m != 0; m &= m - 1) {
+        TriangleHits4 found;
+        intersectTriangles4(r.wray4, packet->triangles, tmax, found);
+        const unsigned used = usedLanes(count, base);
+        bool closer = false;
+        if constexpr (AnyHit) {
+          anything = (found.hit & used) != 0;
+        } else {
+          for (unsigned m = found.hit & used; m != 0; m &= m - 1) {  // brute force's rule: smaller t, then id
+            const int lane = std::countr_zero(m);
+            const uint32_t prim = packet->prim[lane];
+            if (found.t[lane] < hit.t || (found.t[lane] == hit.t && hit.prim != Hit::kNone && prim < hit.prim)) {
+              hit.t = found.t[lane];
+              hit.prim = prim;
+              hit.b1 = found.b1[lane];
+              hit.b2 = found.b2[lane];
+              closer = true;
+            }
+          }
+        }
+        for (unsigned m = found.undecided & used; m != 0 && !(AnyHit && anything); m &= m - 1) {
           const int lane = std::countr_zero(m);
           if constexpr (AnyHit) {
             anything = anyHit(bvh, *packet, lane, r);
-            if (anything) break;
-          } else if (closerHit(bvh, *packet, lane, r, hit)) {
-            anything = true;
-            tLimit = r.cullLimit(hit.t);
-            tLimit4 = r.farLimit(hit.t);
+          } else {
+            closer |= closerHit(bvh, *packet, lane, r, hit);
           }
+        }
+        if (!AnyHit && closer) {
+          anything = true;
+          tLimit = r.cullLimit(hit.t);
+          tLimit4 = r.farLimit(hit.t);
         }
       }
       if (AnyHit && anything) break;

@@ -57,7 +57,8 @@ static_assert(sizeof(WideBvhNode) == 128, "a 4-wide node fills two cache lines")
 // one SSE instruction handles one coordinate of four triangles: the lanes'
 // ids and, for a triangle, its vertices (world space: the very floats of the
 // Geometry, so the triangle test gives the same t as brute force). A lane
-// holding another primitive than a triangle has all vertices 0; an unused lane
+// holding another primitive than a triangle, or a triangle with collinear
+// vertices (never hit), has all vertices 0; an unused lane
 // has id kEmpty. 160 bytes; a leaf of n primitives is ceil(n / 4) packets side
 // by side, its first n lanes in order.
 struct alignas(32) WideBvhPacket {
