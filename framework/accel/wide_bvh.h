@@ -35,9 +35,10 @@ namespace ll {
 // One node: the boxes of up to four children as structure-of-arrays rows
 // (box[side][axis][child], side 0 = min corner, 1 = max corner; world space),
 // so one SSE instruction handles one plane of all four boxes. 128 bytes, two
-// cache lines. An unused child slot has an empty box (min +inf, max -inf),
+// cache lines, aligned to 128 so they are the pair the L2's adjacent-line
+// prefetcher fetches together. An unused child slot has an empty box (min +inf, max -inf),
 // which no ray enters, and child == kEmpty.
-struct alignas(64) WideBvhNode {
+struct alignas(128) WideBvhNode {
   static constexpr uint32_t kEmpty = 0xffffffffu;
   float box[2][3][4];
   uint32_t child[4];  // count == 0: index of an interior node; count > 0: its first packet
