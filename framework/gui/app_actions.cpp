@@ -361,8 +361,27 @@ void submitPanes(AppState& app) {
   }
 }
 
+namespace {
+// Appends the phase of the frame about to be drawn to pane.phasesDrawn, when it differs from the last.
+void notePhaseDrawn(PaneState& pane) {
+  const PaneSnapshot& s = pane.shown;
+  if (s.request != pane.phasesRequest) {
+    pane.phasesDrawn.clear();
+    pane.phasesRequest = s.request;
+  }
+  if (s.phaseName.empty() || pane.phasesDrawn.size() >= 256) return;
+  char fraction[16];
+  std::snprintf(fraction, sizeof fraction, "%.1f", s.phaseFraction < 0.0 ? -1.0 : s.phaseFraction);
+  std::string entry = s.phaseName + " " + fraction;
+  if (pane.phasesDrawn.empty() || pane.phasesDrawn.back() != entry) pane.phasesDrawn.push_back(std::move(entry));
+}
+}  // namespace
+
 void refreshPanes(AppState& app) {
-  for (PaneState& pane : app.panes) pane.shown = pane.renderer->snapshot();
+  for (PaneState& pane : app.panes) {
+    pane.shown = pane.renderer->snapshot();
+    notePhaseDrawn(pane);
+  }
   BackgroundWorker& bg = *app.background;
 
   // Display bytes of every new image (or after an exposure change).

@@ -44,6 +44,10 @@ struct PaneState {
   bool bannerOpen = false;  // the student-task banner under the picture, unfolded (one line per task)
 
   PaneSnapshot shown;  // copied from the renderer once per UI frame
+  // The phases the frames drew for shown.request, in order, as "<phase name> <fraction to 0.1>" (-1.0:
+  // unknown; at most 256): a phase shorter than a screenshot's round trip still shows in a test's report.
+  std::vector<std::string> phasesDrawn;
+  uint64_t phasesRequest = 0;
   GlTexture texture;
   // The sRGB bytes of `shown.image`, encoded on the background worker.
   std::shared_ptr<Mailbox<DisplayImage>> display = std::make_shared<Mailbox<DisplayImage>>();

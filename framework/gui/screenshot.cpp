@@ -88,6 +88,7 @@ std::string saveScreenshotSidecar(const AppState& app, const std::string& path, 
             {"accel_params", p.accelParams.toJson()},
             {"phase_name", p.shown.phaseName},
             {"phase_fraction", p.shown.phaseFraction},
+            {"phases_drawn", p.phasesDrawn},
             {"seconds", p.shown.seconds},
             {"elapsed", p.shown.elapsed()},
             // Whether the pane's picture is on screen (false: the neutral placeholder while it has none

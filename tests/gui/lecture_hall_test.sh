@@ -120,6 +120,10 @@ while :; do
   [ $((SECONDS - switched)) -lt 300 ] || fail "radiosity did not finish in 300 s; phases seen: $phases"
 done
 echo "phases seen: $phases"
-echo "$phases" | grep -Eq "form factors[^|]* 0\.[0-9]+|radiosity \(" || fail "no form-factor or solve progress was shown"
+# A loaded machine may take longer for one screenshot than the whole solve: the phases the GUI's frames
+# drew for this request (phases_drawn in the screenshot's JSON) count too.
+drawn="|$(q "sw_$n.json" "'|'.join(j['panes'][0]['phases_drawn'])")"
+echo "phases drawn: $drawn"
+echo "$phases$drawn" | grep -Eq "form factors[^|]* 0\.[0-9]+|radiosity \(" || fail "no form-factor or solve progress was shown"
 echo "ok: the switch to radiosity showed its phases with progress and never the ray-cast picture"
 echo "lecture hall OK: $OUT"
