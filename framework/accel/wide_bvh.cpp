@@ -465,11 +465,17 @@ inline float nextFloatUp(float t) {
 // The lanes of a leaf's packet `base / 4` that hold one of its `count` primitives.
 inline unsigned usedLanes(uint32_t count, uint32_t base) { return count - base >= 4 ? 0xfu : (1u << (count - base)) - 1u; }
 
+// Brute force's rule for primitive `prim`: it replaces `hit` when its t is below this bound -- a smaller
+// t, or on equal t a smaller primitive id than a hit already found.
+inline float closerBound(uint32_t prim, const Hit& hit) {
+  return (hit.prim != Hit::kNone && prim < hit.prim) ? nextFloatUp(hit.t) : hit.t;
+}
+
 // Tests lane `lane` of `packet` with the scalar tests and keeps in `hit` what brute force keeps: the
 // smallest t in (ray.tmin, ray.tmax), on equal t the smaller primitive id. Returns whether `hit` changed.
 inline bool closerHit(const WideBvh& bvh, const WideBvhPacket& packet, int lane, const WideRay& r, Hit& hit) {
   const uint32_t prim = packet.prim[lane];
-  const float tmax = (hit.prim != Hit::kNone && prim < hit.prim) ? nextFloatUp(hit.t) : hit.t;
+  const float tmax = closerBound(prim, hit);
   float t, b1 = 0.0f, b2 = 0.0f;
   if (prim < bvh.triangleCount) {
     if (!intersectTriangle(r.wray, packet.vertex(0, lane), packet.vertex(1, lane), packet.vertex(2, lane),
@@ -590,10 +596,10 @@ bool traverse(const WideBvh& bvh, const WideRay& r, Hit& hit, QueryCounters& cou
         if constexpr (AnyHit) {
           anything = (found.hit & used) != 0;
         } else {
-          for (unsigned m = found.hit & used; m != 0; m &= m - 1) {  // brute force's rule: smaller t, then id
+          for (unsigned m = found.hit & used; m != 0; m &= m - 1) {
             const int lane = std::countr_zero(m);
             const uint32_t prim = packet->prim[lane];
-            if (found.t[lane] < hit.t || (found.t[lane] == hit.t && hit.prim != Hit::kNone && prim < hit.prim)) {
+            if (found.t[lane] < closerBound(prim, hit)) {
               hit.t = found.t[lane];
               hit.prim = prim;
               hit.b1 = found.b1[lane];
