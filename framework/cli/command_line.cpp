@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <exception>
 #include <memory>
+#include <string>
 
 #include <tbb/global_control.h>
 
@@ -54,7 +55,10 @@ int runCommandLine(int argc, const char* const* argv) {
     return e.get_exit_code();  // a command's own verdict (e.g. compare --max), already explained
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return cl.app.exit(e);  // --help
-    std::fprintf(stderr, "lightlab: error: %s (see lightlab --help)\n", e.what());
+    // Point at the help of the command that was being parsed, which lists its options.
+    std::string help = "lightlab";
+    for (CLI::App* sub : cl.app.get_subcommands()) help += " " + sub->get_name();
+    std::fprintf(stderr, "lightlab: error: %s (see %s --help)\n", e.what(), help.c_str());
     return 2;
   } catch (const UserError& e) {
     std::fprintf(stderr, "lightlab: error: %s\n", e.what());

@@ -52,8 +52,8 @@ Command addRenderCommand(CLI::App& app, const GlobalOptions& global) {
   cmd->add_option("--seed", o->seed, "Seed of the random streams (images depend on it, not on threads)")
       ->capture_default_str();
   cmd->add_option("--set", o->sets, "Technique or accelerator parameter, name=value (repeatable)");
-  cmd->add_option("-o,--output", o->output, "Output image: .png, .jpg (sRGB), .hdr or .pfm (linear)")
-      ->required();
+  cmd->add_option("-o,--output", o->output,
+                  "Output image: .png, .jpg (sRGB), .hdr or .pfm (linear); default out/SCENE-TECHNIQUE.png");
   cmd->add_option("--exposure", o->exposure, "Exposure in stops for .png/.jpg output")->capture_default_str();
   cmd->add_option("--stats", o->statsPath, "Write statistics (times, rays by kind, ...) as JSON");
   cmd->add_option("--cost", o->cost,
@@ -62,6 +62,9 @@ Command addRenderCommand(CLI::App& app, const GlobalOptions& global) {
       ->check(CLI::IsMember({"nodes", "primitives"}));
   return [o, &global]() {
     SceneSetup s = setUpScene(o->scene, o->technique, o->accelerator, o->sets);
+    if (o->output.empty())  // out/ in the working directory (git ignores it), the path printed below
+      o->output = (fs::path("out") / (fs::path(o->scene).stem().string() + "-" + s.technique->name +
+                                      (o->cost.empty() ? "" : "-cost-" + o->cost) + ".png")).string();
     RenderSettings settings;
     settings.width = o->width > 0 ? o->width : s.scene.camera.width;
     settings.height = o->height > 0 ? o->height : s.scene.camera.height;

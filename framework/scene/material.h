@@ -3,7 +3,8 @@
 // lecture's Blinn-Phong terms plus mirror, dielectric and emission (the
 // default, as scenes always had it), lambert, conductor (a GGX microfacet
 // metal), dielectric (smooth glass) or rough-dielectric. The path tracer
-// evaluates the model itself; the rasterizer, ray casting and Whitted see
+// evaluates the model itself; the rasterizer (CPU and its GPU twin), ray
+// casting and Whitted see
 // every model through the Blinn-Phong fields below, which the loader fills
 // with the model's local and specular limit (a metal: its Fresnel colour at
 // normal incidence as mirror and highlight). All colours are linear RGB in

@@ -75,7 +75,11 @@ Transform parseTransform(const JsonNode& obj) {
 std::string sceneRelativeFile(const JsonNode& n, const std::string& baseDir, const std::string& what) {
   const std::string file = (fs::path(baseDir) / n.json().get<std::string>()).lexically_normal().string();
   std::error_code ec;  // (a name too long for the system: a message, not a filesystem_error)
-  if (!fs::exists(file, ec)) n.fail(what + " not found: " + file + (ec ? " (" + ec.message() + ")" : ""));
+  if (!fs::exists(file, ec)) {  // the full path, so a name relative to the scene's folder is not misread
+    std::error_code ec2;
+    const fs::path absolute = fs::absolute(file, ec2).lexically_normal();
+    n.fail(what + " not found: " + (ec || ec2 ? file : absolute.string()) + (ec ? " (" + ec.message() + ")" : ""));
+  }
   return file;
 }
 

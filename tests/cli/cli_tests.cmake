@@ -12,6 +12,8 @@ function(lightlab_error_test name regex)
            COMMAND bash ${EXPECT_ERROR} "${regex}" ${OUT}/${name}.png -- ${LL} ${ARGN})
 endfunction()
 
+lightlab_error_test(unknown_option "^lightlab: error: The following argument was not expected: --bogus \\(see lightlab render --help\\)$"
+                    render ${SCENES}/cornell_box.json --bogus)
 lightlab_error_test(missing_scene "^lightlab: error: .*/nope\\.json: no such scene file$" render ${SCENES}/nope.json -o ${OUT}/missing_scene.png)
 lightlab_error_test(malformed_json "malformed_json\\.json:6:5: malformed JSON: syntax error while parsing object - unexpected string literal; expected '}' \\(a missing comma before it\\?\\)$"
                     render ${SCENES}/tests/bad/malformed_json.json -o ${OUT}/malformed_json.png)
@@ -67,6 +69,14 @@ lightlab_error_test(obj_bad_face_index "obj_bad_index\\.obj: face 1 uses vertex 
                     render ${SCENES}/tests/bad/obj_bad_index.obj -o ${OUT}/obj_bad_face_index.png)
 
 # Renders that must succeed and write their files.
+# Without -o the image goes to out/SCENE-TECHNIQUE.png in the working directory (issue 27's command, smaller).
+file(MAKE_DIRECTORY ${OUT}/default_output)
+add_test(NAME cli.render.default_output_path
+         COMMAND ${LL} --quiet render ${SCENES}/cornell_box_spectral.json -t path --set spectral=true
+                 --width 32 --spp 2
+         WORKING_DIRECTORY ${OUT}/default_output)
+set_tests_properties(cli.render.default_output_path PROPERTIES
+                     PASS_REGULAR_EXPRESSION "^wrote out/cornell_box_spectral-path\\.png \\(32x32, 2 spp, path")
 add_test(NAME cli.render.cornell_box
          COMMAND ${LL} --quiet render ${SCENES}/cornell_box.json -t raycast -o ${OUT}/cornell.png
                  --stats ${OUT}/cornell.json)
