@@ -30,7 +30,7 @@ class Raycast final : public PixelTechnique {
     camera_ = renderCamera(ctx.scene, ctx.settings);
     lightSamples_ = ctx.params.getInt("light_samples");
     // Only a scene with transmissive surfaces has anything to filter: elsewhere the cheaper any-hit query.
-    filtered_ = ctx.params.getChoice("shadows") == "filtered" && ctx.scene.effects.has(Effect::Refraction);
+    filtered_ = ctx.params.getChoice("shadows") == "filtered" && ctx.scene.hasTransmission;
     student_.reset();
     // auto: your tests when there is no accelerator (-a none, the default), else the accelerator's.
     const std::string& choice = ctx.params.getChoice("intersection");

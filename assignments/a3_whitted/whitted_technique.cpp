@@ -103,9 +103,9 @@ class Whitted final : public PixelTechnique {
       LightPathClass cls;
     };
     std::vector<Candidate> candidates;
-    for (const auto& [cls, effect] : {std::pair{LightPathClass::Refraction, Effect::Refraction},
-                                      std::pair{LightPathClass::MirrorReflection, Effect::MirrorReflection}})
-      if (ctx.scene.effects.has(effect)) {
+    for (const auto& [cls, spawned] : {std::pair{LightPathClass::Refraction, ctx.scene.hasTransmission},
+                                       std::pair{LightPathClass::MirrorReflection, ctx.scene.hasMirrors}})
+      if (spawned) {
         const auto [without, perPass] = render(lightPathBit(cls));
         candidates.push_back({compareImages(without, full).relmse, perPass, cls});
       }

@@ -29,7 +29,7 @@ WhittedTracer::WhittedTracer(const Scene& scene, const Tracer& tracer, const Whi
       settings_(settings),
       rng_(rng),
       tree_(tree),
-      transmissive_(scene.effects.has(Effect::Refraction)) {}
+      transmissive_(scene.hasTransmission) {}
 
 std::optional<Surface> WhittedTracer::intersect(const Ray& ray, const PathState& path) const {
   Hit hit;

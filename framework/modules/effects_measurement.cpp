@@ -46,7 +46,7 @@ EffectsReport measureSceneEffects(const Scene& scene, const Accelerator& accel, 
   r.batches = probe.batches();
   r.probeSeconds = probe.seconds();
   r.unseenPointLightCaustics =
-      !scene.lights.empty() && (scene.effects.has(Effect::MirrorReflection) || scene.effects.has(Effect::Refraction));
+      !scene.lights.empty() && (scene.hasMirrors || scene.hasTransmission);
 
   for (int i = 0; i < kEffectCount; ++i) {
     EffectMeasurement m;

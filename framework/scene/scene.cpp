@@ -61,15 +61,18 @@ EffectSet analyseEffects(const Scene& s) {
   for (size_t i = 0; i < s.materials.size(); ++i) {
     if (!used[i]) continue;
     const Material& m = s.materials[i];
-    if (m.reflectsMirror()) e.add(Effect::MirrorReflection);
-    if (m.transmits()) e.add(Effect::Refraction);
+    // A rough metal or rough glass scatters glossily; its mirror and clear-glass fields are only the local
+    // model's specular limit (material.h), so it makes glossy reflection possible, not mirror reflection or
+    // refraction -- as the path tracer's light-path classes count it.
+    if (m.reflectsMirror() && !m.glossyScattering()) e.add(Effect::MirrorReflection);
+    if (m.transmits() && !m.glossyScattering()) e.add(Effect::Refraction);
     if (m.transmits() && m.dispersive()) e.add(Effect::Dispersion);
     if (m.glossy() && (hasLights || hasAreaLights)) e.add(Effect::GlossyHighlights);
     if (m.glossyScattering()) e.add(Effect::GlossyReflection);
     if (m.texture.kind != Texture::Kind::None) e.add(Effect::Textures);
     if (m.emits()) e.add(Effect::Emission);
     if (!isBlack(m.kd) || m.texture.kind == Texture::Kind::Checker) diffuse = true;
-    if (m.reflectsMirror() || m.transmits() || (m.model == BsdfModel::Conductor && !m.glossyScattering()))
+    if (!m.glossyScattering() && (m.reflectsMirror() || m.transmits() || m.model == BsdfModel::Conductor))
       specular = true;
   }
   // Light bouncing between surfaces needs two surfaces that see each other: as for shadows, more than one
@@ -111,6 +114,12 @@ void Scene::finalize() {
   }
   for (AreaLight& l : areaLights) l.canBeOccluded = lightCanBeOccluded(*this, boxes, boxes[l.object], l.object);
   effects = analyseEffects(*this);
+  hasMirrors = hasTransmission = false;
+  for (const SceneObject& o : objects) {
+    if (o.primCount == 0) continue;
+    hasMirrors = hasMirrors || materials[o.material].reflectsMirror();
+    hasTransmission = hasTransmission || materials[o.material].transmits();
+  }
 }
 
 SurfacePoint Scene::surfacePoint(const Ray& ray, const Hit& hit) const {

@@ -75,8 +75,11 @@ class Scene {
   Geometry geometry;
   std::vector<AreaLight> areaLights;
   EffectSet effects;
+  // Some object's material has a mirror or a transmission term (the local model's fields, so rough metals and
+  // rough glass count by their specular limit): what Whitted's secondary rays and filtered shadow rays need.
+  bool hasMirrors = false, hasTransmission = false;
 
-  // Fills areaLights and effects from the content; loaders call it last.
+  // Fills areaLights, effects and the flags above from the content; loaders call it last.
   void finalize();
 
   SurfacePoint surfacePoint(const Ray& ray, const Hit& hit) const;

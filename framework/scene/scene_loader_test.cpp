@@ -144,6 +144,22 @@ TEST(SceneLoader, CornellBox) {
   EXPECT_NEAR(n.y, -1.0f, 1e-6f);
 }
 
+// Rough metals make glossy reflection possible, not mirror reflection: their mirror field is only the local
+// model's specular limit (the path tracer's light-path classes count them as glossy). Whitted still traces it.
+TEST(SceneLoader, RoughMetalsAreGlossyNotMirrors) {
+  const Scene s = loadScene(kScenes + "/metal_spheres.json");
+  EXPECT_TRUE(s.effects.has(Effect::GlossyReflection));
+  EXPECT_FALSE(s.effects.has(Effect::MirrorReflection));
+  EXPECT_FALSE(s.effects.has(Effect::Refraction));
+  EXPECT_FALSE(s.effects.has(Effect::Caustics));  // L S+ D needs a smooth (specular) surface
+  EXPECT_TRUE(s.hasMirrors);
+  EXPECT_FALSE(s.hasTransmission);
+  const Scene glass = loadScene(kScenes + "/glass_and_water.json");  // smooth water and glass, rough glass
+  EXPECT_TRUE(glass.effects.has(Effect::Refraction));
+  EXPECT_TRUE(glass.effects.has(Effect::GlossyReflection));
+  EXPECT_TRUE(glass.hasTransmission);
+}
+
 TEST(SceneLoader, WhittedEffects) {
   const Scene s = loadScene(kScenes + "/whitted_1980.json");
   EXPECT_TRUE(s.effects.has(Effect::Refraction));
