@@ -150,10 +150,11 @@ class Radiosity final : public PixelTechnique {
     char text[160];
     std::snprintf(text, sizeof text, "the shots of %zu of %zu patches, whose unshot light does not show (the "
                   "ambient term stands for it)", patches - std::min(rows, patches), patches);
-    w.skipped = rows == 0 && w.errorAdded == 0.0 ? "nothing: no patch emits light" : text;
+    const bool dark = rows == 0 && w.errorAdded == 0.0;
+    w.skipped = dark ? "nothing: no patch emits light (radiosity's light comes from emissive surfaces only)" : text;
     std::snprintf(text, sizeof text, "%zu of %zu hemicube rows computed (%.0f %% of the form factors not)", rows,
                   patches, patches ? 100.0 * (1.0 - static_cast<double>(rows) / static_cast<double>(patches)) : 0.0);
-    w.saved = text;
+    if (!dark) w.saved = text;
     skipped_ = w;
   }
 
@@ -323,10 +324,11 @@ class RadiosityRaster final : public Technique {
 }  // namespace
 
 TechniqueInfo radiosityTechnique() {
-  return {
+  TechniqueInfo t{
       "radiosity",
       "radiosity: diffuse patches, form factors (hemicube, analytic, Monte Carlo), B = E + rho F B solved once "
-      "(direct, Jacobi, Gauss-Seidel, Southwell, progressive), shown with interpolated patch radiosities by ray casting",
+      "(direct, Jacobi, Gauss-Seidel, Southwell, progressive), shown with interpolated patch radiosities by ray casting; "
+      "light from emissive surfaces only (point and directional lights light nothing)",
       EffectSet{Effect::DirectLighting, Effect::SoftShadows, Effect::HardShadows, Effect::DiffuseInterreflection,
                 Effect::Emission},
       3,
@@ -336,12 +338,14 @@ TechniqueInfo radiosityTechnique() {
                         "not show never shoot"),
       []() -> std::unique_ptr<Technique> { return std::make_unique<Radiosity>(); },
   };
+  t.pointLights = false;  // light enters as the emission E of patches
+  return t;
 }
 
 TechniqueInfo radiosityRasterTechnique() {
   std::vector<ParamDecl> params = radiosityParams();
   params.push_back(ParamDecl::choice("samples", "4", {"1", "4", "16"}, "supersamples per pixel of the rasterizer"));
-  return {
+  TechniqueInfo t{
       "radiosity-raster",
       "radiosity's solution drawn by the software rasterizer of assignment 1 (the same solve as `radiosity`, "
       "another display; progressive does not apply)",
@@ -351,6 +355,8 @@ TechniqueInfo radiosityRasterTechnique() {
       params,
       []() -> std::unique_ptr<Technique> { return std::make_unique<RadiosityRaster>(); },
   };
+  t.pointLights = false;
+  return t;
 }
 
 }  // namespace ll

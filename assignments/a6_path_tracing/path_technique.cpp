@@ -205,7 +205,7 @@ class PathTracing final : public PixelTechnique {
     ParamSet probeParams = ctx.params;
     probeParams.set("effects", "all");
     LightPathProbeSettings ps;
-    ps.seed = ctx.settings.seed + 7919;  // not the render's own streams
+    // The seed `lightlab info` probes with (whatever the render's --seed): both make the same call on a scene.
     const LightPathProbe probe(ctx.scene, ctx.accel, pathTechnique(), probeParams, ps);
     const double tolerance = ctx.params.getFloat("effects_tolerance");
     std::vector<std::pair<double, LightPathClass>> order;

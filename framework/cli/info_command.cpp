@@ -66,6 +66,9 @@ void printMeasurement(const EffectsReport& r, int camWidth, int camHeight) {
     std::printf("  %-24s %-24s %-24s %s\n", effectName(m.effect), percent(m.share).c_str(),
                 relMse(m.relMseWithout).c_str(), m.calledFor ? "yes" : "no");
   }
+  for (const EffectMeasurement& m : r.effects)
+    if (m.effect == Effect::Emission && m.measured && m.share.high > 0.0)
+      std::printf("  (emission: the lights, and the sky or backdrop, seen directly or through mirrors and glass)\n");
   if (!unmeasured.empty())
     std::printf("  not light paths, called for as present: %s\n", unmeasured.c_str());
   if (r.unseenPointLightCaustics)
@@ -77,7 +80,7 @@ void printMeasurement(const EffectsReport& r, int camWidth, int camHeight) {
       if (m.effect == e) return m.share.high > 0.0;
     return false;
   };
-  std::printf("\n  %-26s %-22s %-24s %s\n", "technique", "time", "relMSE of what it misses", "within tolerance");
+  std::printf("\n  %-26s %-22s %-27s %s\n", "technique", "time", "relMSE of what it misses", "within tolerance");
   for (const TechniqueVerdict& v : r.techniques) {
     std::string time = seconds(v.seconds);
     if (v.passes > 1) time += " (" + std::to_string(v.passes) + " passes)";
@@ -88,8 +91,8 @@ void printMeasurement(const EffectsReport& r, int camWidth, int camHeight) {
         missed.emplace_back(lightPathClassName(lightPathClassAt(c)));
     if (!missed.empty()) verdict += ": misses " + joinNames(missed);
     if (!v.missedUnmeasured.empty())
-      verdict += std::string(missed.empty() ? ": misses " : "; and ") + joinNames(v.missedUnmeasured.names());
-    std::printf("  %-26s %-22s %-24s %s\n", v.technique.c_str(), time.c_str(), relMse(v.missedError).c_str(),
+      verdict += std::string(missed.empty() ? ": misses " : "; also ") + joinNames(v.missedUnmeasured.names());
+    std::printf("  %-26s %-22s %-27s %s\n", v.technique.c_str(), time.c_str(), relMse(v.missedError).c_str(),
                 verdict.c_str());
   }
   std::printf("  (time: for the camera's %dx%d picture, estimated from one pass measured at the probe's size with a "
@@ -104,13 +107,14 @@ void printMeasurement(const EffectsReport& r, int camWidth, int camHeight) {
 nlohmann::json vec(const Vec3& v) { return {v.x, v.y, v.z}; }
 
 nlohmann::json describe(const Scene& s) {
-  const TechniqueInfo* cheapest = cheapestTechniqueFor(s.effects);
+  const TechniqueInfo* cheapest = cheapestTechniqueFor(s);
   size_t point = 0, directional = 0;
   for (const Light& l : s.lights) (l.type == Light::Type::Point ? point : directional)++;
   const Bounds3 b = s.geometry.sceneBounds();
   nlohmann::json perTechnique = nlohmann::json::object();
   for (const TechniqueInfo& t : techniques()) {
-    perTechnique[t.name] = {{"simulates", t.simulates.names()}, {"misses", s.effects.minus(t.simulates).names()}};
+    const EffectSet simulates = t.simulatesIn(s);
+    perTechnique[t.name] = {{"simulates", simulates.names()}, {"misses", s.effects.minus(simulates).names()}};
   }
   return {
       {"scene", s.path},
@@ -200,19 +204,23 @@ Command addInfoCommand(CLI::App& app, const GlobalOptions& global) {
                 scene.geometry.triangleCount(), scene.geometry.spheres.size(), scene.materials.size());
     std::printf("lights     %zu point/directional, %zu area (emissive objects), sky: %s\n", scene.lights.size(),
                 scene.areaLights.size(),
-                scene.environment.black()     ? "none (black background)"
+                scene.environment.black() ? "none (black background)"
+                : !scene.environment.lightsScene()
+                    ? (scene.environment.isImage() ? "an HDR image, a backdrop that lights nothing"
+                                                   : "a constant colour, a backdrop that lights nothing")
                 : scene.environment.isImage() ? "an HDR image (a light for path)"
                                               : "a constant colour (a light for path)");
     std::printf("camera     %dx%d, fov %.2f deg\n", scene.camera.width, scene.camera.height,
                 static_cast<double>(scene.camera.fovYDeg));
     std::printf("present    %s\n", joinNames(scene.effects.names()).c_str());
     std::printf("           (the effects the scene's content makes possible, whatever their size)\n");
-    const TechniqueInfo* cheapest = cheapestTechniqueFor(scene.effects);
+    const TechniqueInfo* cheapest = cheapestTechniqueFor(scene);
     std::printf("simulates all present: %s\n",
                 cheapest ? cheapest->name.c_str() : "(no registered technique simulates all of these effects)");
     for (const TechniqueInfo& t : techniques()) {
-      const EffectSet missed = scene.effects.minus(t.simulates);
+      const EffectSet missed = scene.effects.minus(t.simulatesIn(scene));
       std::string line = missed.empty() ? "simulates all" : "misses " + joinNames(missed.names());
+      if (!t.pointLights && !scene.lights.empty()) line += " (its light comes from emissive surfaces only, not point lights)";
       for (const TechniqueInfo::ParamEffect& e : t.onlyWith) {  // "path ... dispersion: with --set spectral=true"
         const EffectSet needs = EffectSet::fromBits(scene.effects.bits() & e.effects.bits());
         if (!needs.empty()) line += " (" + joinNames(needs.names()) + ": with --set " + e.param + "=" + e.value + ")";

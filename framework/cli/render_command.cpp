@@ -147,6 +147,10 @@ Command addRenderCommand(CLI::App& app, const GlobalOptions& global) {
       std::fprintf(stderr, "lightlab: %s: %s\n", id.c_str(), what.c_str());
     if (!stats.referenceTasks.empty())
       std::fprintf(stderr, "lightlab: by their reference (--reference): %s\n", stats.referenceTasks.c_str());
+    if (!s.technique->pointLights && !s.scene.lights.empty())
+      std::fprintf(stderr, "lightlab: %s lights the scene by its emissive surfaces only; the scene's %zu point or "
+                   "directional light(s) light nothing here (give an object \"emission\" for an area light)\n",
+                   s.technique->name.c_str(), s.scene.lights.size());
     if (stats.work.nonFinite > 0)
       std::fprintf(stderr, "lightlab: %llu NaN/Inf samples were replaced by black\n",
                    static_cast<unsigned long long>(stats.work.nonFinite));
@@ -163,9 +167,12 @@ Command addRenderCommand(CLI::App& app, const GlobalOptions& global) {
     if (stats.skipped) {
       const SkippedWork& w = *stats.skipped;
       char saved[128] = "no time saved";
-      if (w.secondsPerPassSkipping > 0.0 && w.secondsPerPassFull > 0.0)
-        std::snprintf(saved, sizeof saved, "%.0f %% less time per sample (measured on the probe)",
-                      100.0 * (1.0 - w.secondsPerPassSkipping / w.secondsPerPassFull));
+      const double fraction = w.secondsPerPassFull > 0.0 ? 1.0 - w.secondsPerPassSkipping / w.secondsPerPassFull : 0.0;
+      if (w.secondsPerPassSkipping > 0.0 && fraction >= 0.05)
+        std::snprintf(saved, sizeof saved, "%.0f %% less time per sample (measured on the probe)", 100.0 * fraction);
+      else if (w.secondsPerPassSkipping > 0.0)  // within the timing noise of a small probe
+        std::snprintf(saved, sizeof saved, "no measurable time saved (%.2g against %.2g s per sample on the probe)",
+                      w.secondsPerPassSkipping, w.secondsPerPassFull);
       else if (!w.saved.empty())
         std::snprintf(saved, sizeof saved, "%s", w.saved.c_str());
       char bound[64] = "";  // a probe's estimate has an interval; a measured or estimated value has none

@@ -249,6 +249,8 @@ Command addStudyCommand(CLI::App& app, const GlobalOptions& global) {
       ->capture_default_str()
       ->check(CLI::Range(0.0, 1.0));
   cmd->add_option("scene", o->scene, "Scene file (.json or .obj), or a built-in study:" + builtinHelp)->required();
+  auto effectsScenes = std::make_shared<std::vector<std::string>>();
+  cmd->add_option("effects_scenes", *effectsScenes, "study effects SCENE...: the scenes to study (as --scenes)");
   cmd->add_option("--knob", o->knob, "NAME=v1,v2,...: a technique or accelerator parameter, spp, or accel");
   cmd->add_option("-t,--technique", o->techniques,
                   "Technique(s), comma separated: one curve each; TECHNIQUE:name=value;... gives a curve "
@@ -268,13 +270,18 @@ Command addStudyCommand(CLI::App& app, const GlobalOptions& global) {
                   "Samples per pixel of the rendered reference (default: 256 if the knob is spp, else --spp)")
       ->check(CLI::Range(1, 1 << 20));
   cmd->add_option("--reference-set", o->referenceSets, "Parameter change of the rendered reference, name=value");
-  cmd->add_option("--out", o->out, "Output folder: study.csv, study.html, images")->required();
+  cmd->add_option("--out", o->out, "Output folder: study.csv, study.html, images (default: out/STUDY)");
   o->cache = defaultReferenceCache();
   cmd->add_option("--cache", o->cache,
                   "Folder where rendered references are kept and reused (\"\" = none; default: " + o->cache + ")");
-  return [o, width, effects, &global]() {
+  return [o, width, effects, effectsScenes, &global]() {
     o->widthGiven = width->count() > 0;
+    if (o->out.empty()) o->out = (fs::path("out") / fs::path(o->scene).stem()).string();
+    if (o->scene != "effects" && !effectsScenes->empty())
+      throwUserError("study: one scene or built-in study at a time (got '" + o->scene + "' and '" +
+                     effectsScenes->front() + "'); several scenes are for `study effects SCENE...`");
     if (o->scene == "effects") {
+      effects->scenes.insert(effects->scenes.end(), effectsScenes->begin(), effectsScenes->end());
       effects->out = o->out;
       if (o->widthGiven) effects->width = o->width;
       if (o->referenceSpp > 0) effects->referenceSpp = o->referenceSpp;

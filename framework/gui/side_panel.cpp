@@ -246,13 +246,17 @@ void paneSection(AppState& app, int i) {
         "scale");
   if (ImGui::Button("Restart")) p.dirty = true;
   if (app.scene) {
-    const EffectSet sim = findTechnique(p.technique).simulatesWith(p.techniqueParams);
+    const TechniqueInfo& info = findTechnique(p.technique);
+    const EffectSet sim = info.simulatesIn(*app.scene, p.techniqueParams);
     const EffectSet needed = app.scene->effects;
     ImGui::TextWrapped("simulates: %s",
                        joinNames(EffectSet::fromBits(needed.bits() & sim.bits()).names()).c_str());
     const EffectSet missed = needed.minus(sim);
     if (!missed.empty())
-      ImGui::TextColored(ImVec4(1, 0.7f, 0.3f, 1), "misses: %s", joinNames(missed.names()).c_str());
+      ImGui::TextColored(ImVec4(1, 0.7f, 0.3f, 1), "misses: %s%s", joinNames(missed.names()).c_str(),
+                         !info.pointLights && !app.scene->lights.empty()
+                             ? " (its light comes from emissive surfaces only, not point lights)"
+                             : "");
   }
   statsTable(p);
   if (p.hasError)

@@ -210,7 +210,7 @@ std::vector<std::string> paneCaption(const AppState& app, int index, const std::
     lines.emplace_back(buf);
   }
   if (app.scene && !isCostView(s.view)) {
-    const EffectSet missed = app.scene->effects.minus(findTechnique(p.technique).simulatesWith(p.techniqueParams));
+    const EffectSet missed = app.scene->effects.minus(findTechnique(p.technique).simulatesIn(*app.scene, p.techniqueParams));
     if (!missed.empty()) lines.push_back("misses: " + joinNames(missed.names()));
   }
   return lines;
@@ -335,6 +335,7 @@ void drawLightPathLabels(AppState& app, ImDrawList* dl, const PaneState& p, Rect
     const float bottom = r.y + static_cast<float>(t.y + t.h) * sy;
     std::vector<std::string> lines{t.name};
     if (t.share >= 0.0) lines.push_back(t.shareText());
+    if (t.relMseWithout >= 0.0) lines.push_back(t.relMseText());
     captionBox(app.overlayRects, dl, x + 2.0f, bottom - 2.0f, lines, IM_COL32(0, 0, 0, 190), w - 4.0f, Anchor::Bottom);
   }
 }

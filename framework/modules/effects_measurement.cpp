@@ -74,7 +74,7 @@ EffectsReport measureSceneEffects(const Scene& scene, const Accelerator& accel, 
     if (params.has("intersection")) params.set("intersection", "framework");  // ray casting: the accelerator
     TechniqueVerdict v;
     v.technique = &t == &path ? r.probeTechnique : t.name;
-    const EffectSet simulates = t.simulatesWith(params);
+    const EffectSet simulates = t.simulatesIn(scene, params);
     for (int c = 0; c < kLightPathClassCount; ++c)
       if (!simulates.has(lightPathClassEffect(lightPathClassAt(c)))) v.missedClasses |= lightPathBit(lightPathClassAt(c));
     v.missedError = probe.relMseWithout(v.missedClasses);

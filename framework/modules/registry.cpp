@@ -53,6 +53,13 @@ const TechniqueInfo* cheapestTechniqueFor(EffectSet needed) {
   return best;
 }
 
+const TechniqueInfo* cheapestTechniqueFor(const Scene& scene) {
+  const TechniqueInfo* best = nullptr;
+  for (const auto& t : techniques())
+    if (!t.gpu && t.simulatesIn(scene).contains(scene.effects) && (!best || t.cost < best->cost)) best = &t;
+  return best;
+}
+
 std::unique_ptr<Accelerator> buildAccelerator(const AcceleratorInfo& info, const ParamSet& params,
                                               const Geometry& geometry, double* buildSeconds) {
   auto accel = info.make(params);

@@ -21,6 +21,8 @@ std::vector<std::string> techniqueNames();
 
 // The cheapest technique that simulates every effect in `needed`, or null.
 const TechniqueInfo* cheapestTechniqueFor(EffectSet needed);
+// ... that simulates every effect the scene has, with its lights (techniques' simulatesIn).
+const TechniqueInfo* cheapestTechniqueFor(const Scene& scene);
 
 // Builds the named accelerator over the scene (with its parameters).
 std::unique_ptr<Accelerator> buildAccelerator(const AcceleratorInfo& info, const ParamSet& params,

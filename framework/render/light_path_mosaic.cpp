@@ -22,6 +22,13 @@ std::string MosaicTile::shareText() const {
   return text;
 }
 
+std::string MosaicTile::relMseText() const {
+  if (relMseWithout < 0.0) return "";
+  char text[48];
+  std::snprintf(text, sizeof text, "without: relMSE %.2g", relMseWithout);
+  return text;
+}
+
 std::string MosaicTile::label() const { return share < 0.0 ? name : name + " " + shareText(); }
 
 LightPathMosaic lightPathMosaic(const FrameBuffer& fb) {
@@ -34,7 +41,8 @@ LightPathMosaic lightPathMosaic(const FrameBuffer& fb) {
   std::vector<std::pair<MosaicTile, Image>> shown{{MosaicTile{"picture"}, picture}};
   for (const LightPathShare& s : lightPathShares(fb))
     if (s.luminanceShare >= 1e-4)
-      shown.push_back({MosaicTile{lightPathClassShortName(s.cls), s.luminanceShare}, fb.resolveLightPath(s.cls)});
+      shown.push_back({MosaicTile{lightPathClassShortName(s.cls), s.luminanceShare, s.relMseWithout},
+                       fb.resolveLightPath(s.cls)});
   const int n = static_cast<int>(shown.size());
   const int cols = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n))));
   const int rows = (n + cols - 1) / cols;

@@ -16,8 +16,10 @@ namespace ll {
 struct MosaicTile {
   std::string name;                // "picture", or the class's short name: "direct", "indirect", "caustics", ...
   double share = -1.0;             // the class's share of the luminance, 0..1 (-1: the picture)
+  double relMseWithout = -1.0;     // relMSE of the picture without the class (light_path_split.h; -1: the picture)
   int x = 0, y = 0, w = 0, h = 0;  // pixels of the mosaic image
   std::string shareText() const;   // "44.7 %", or "" for the picture
+  std::string relMseText() const;  // "without: relMSE 0.016", or "" for the picture
   std::string label() const;       // "direct 44.7 %"
 };
 

@@ -28,6 +28,13 @@ EffectSet TechniqueInfo::simulatesWith(const ParamSet& values) const {
   return s;
 }
 
+EffectSet TechniqueInfo::simulatesIn(const Scene& scene, const ParamSet& values) const {
+  const EffectSet s = simulatesWith(values);
+  if (pointLights || scene.lights.empty()) return s;
+  return s.minus(EffectSet{Effect::DirectLighting, Effect::HardShadows, Effect::DiffuseInterreflection,
+                           Effect::GlossyHighlights, Effect::Caustics});
+}
+
 namespace {
 std::atomic<bool> precomputationCache{true};
 }  // namespace

@@ -135,9 +135,15 @@ struct TechniqueInfo {
     EffectSet effects;
   };
   std::vector<ParamEffect> onlyWith{};
+  // Lights surfaces by point and directional lights too; radiosity's light comes only from emissive surfaces.
+  bool pointLights = true;
 
   // What the technique simulates with these parameter values (the declared defaults where not set).
   EffectSet simulatesWith(const ParamSet& values) const;
+  // ... on this scene: a technique that ignores point lights misses the light they bring (direct lighting,
+  // hard shadows, and what bounces on from them) wherever a scene has one.
+  EffectSet simulatesIn(const Scene& scene, const ParamSet& values) const;
+  EffectSet simulatesIn(const Scene& scene) const { return simulatesIn(scene, ParamSet{}); }
 };
 
 }  // namespace ll
