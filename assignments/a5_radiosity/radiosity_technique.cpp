@@ -18,6 +18,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "core/timer.h"
 #include "radiosity_scene.h"
 #include "rasterizer.h"
 #include "render/light_path_class.h"
@@ -59,6 +60,7 @@ class Radiosity final : public PixelTechnique {
     if (measured_) settings_.progressive = true;  // what is not shot is not computed
     if (settings_.progressive) {
       progressive_ = a5::progressiveScene(ctx.scene, settings_);
+      shootingSeconds_ = 0.0;
       patches_ = progressive_.patches;
       solved_.reset();
       return;
@@ -137,23 +139,33 @@ class Radiosity final : public PixelTechnique {
   // show never shoot, and their hemicube rows are never computed.
   void shootWhileItShows(size_t shots, bool last) {
     a5::ProgressiveRadiosity& state = *progressive_.state;
+    const Timer timer;
     while (state.unshotRelMse() > effectsTolerance_ && state.shots() < shots) {
       const size_t before = state.shots();
       state.advance(std::min(shots, before + std::max<size_t>(8, before / 8)), settings_.solver.tolerance);
       if (state.shots() == before) break;  // converged to the solver's tolerance, or nothing left to shoot
     }
+    shootingSeconds_ += timer.seconds();
     if (!last) return;
     SkippedWork w;
     w.tolerance = effectsTolerance_;
     w.errorAdded = w.errorAddedHigh = state.unshotRelMse();  // an estimate: the ambient term's, not a bound
     const size_t rows = state.rowsComputed(), patches = patches_->mesh.patches.size();
-    char text[160];
+    char text[256];
     std::snprintf(text, sizeof text, "the shots of %zu of %zu patches, whose unshot light does not show (the "
                   "ambient term stands for it)", patches - std::min(rows, patches), patches);
     const bool dark = rows == 0 && w.errorAdded == 0.0;
     w.skipped = dark ? "nothing: no patch emits light (radiosity's light comes from emissive surfaces only)" : text;
-    std::snprintf(text, sizeof text, "%zu of %zu hemicube rows computed (%.0f %% of the form factors not)", rows,
-                  patches, patches ? 100.0 * (1.0 - static_cast<double>(rows) / static_cast<double>(patches)) : 0.0);
+    // The rows not computed would have cost what the computed ones did on average (rows dominate a shot).
+    const double savedSeconds =
+        rows > 0 ? shootingSeconds_ / static_cast<double>(rows) * static_cast<double>(patches - std::min(rows, patches))
+                 : 0.0;
+    std::snprintf(text, sizeof text,
+                  "%zu of %zu hemicube rows computed (%.0f %% of the form factors not: about %.2g s, estimated from "
+                  "the %.2g s the computed ones took)",
+                  rows, patches,
+                  patches ? 100.0 * (1.0 - static_cast<double>(rows) / static_cast<double>(patches)) : 0.0,
+                  savedSeconds, shootingSeconds_);
     if (!dark) w.saved = text;
     skipped_ = w;
   }
@@ -162,6 +174,7 @@ class Radiosity final : public PixelTechnique {
 
   bool measured_ = false;
   double effectsTolerance_ = 1e-3;
+  double shootingSeconds_ = 0.0;  // effects=measured: time spent shooting in this solve's passes
   std::optional<SkippedWork> skipped_;
 
   // The classes bounce 0, 1 and 2+ fall in; per class, the shown radiosity's part per patch and per vertex.

@@ -173,14 +173,14 @@ Command addRenderCommand(CLI::App& app, const GlobalOptions& global) {
       else if (w.secondsPerPassSkipping > 0.0)  // within the timing noise of a small probe
         std::snprintf(saved, sizeof saved, "no measurable time saved (%.2g against %.2g s per sample on the probe)",
                       w.secondsPerPassSkipping, w.secondsPerPassFull);
-      else if (!w.saved.empty())
-        std::snprintf(saved, sizeof saved, "%s", w.saved.c_str());
+
       char bound[64] = "";  // a probe's estimate has an interval; a measured or estimated value has none
       if (w.errorAddedHigh != w.errorAdded) std::snprintf(bound, sizeof bound, "95 %% bound %.2g, ", w.errorAddedHigh);
       char probing[48] = "";
       if (w.probeSeconds > 0.0) std::snprintf(probing, sizeof probing, "; %.1f s of probing", w.probeSeconds);
       std::printf("effects=measured: left out %s; error added relMSE %.2g (%stolerance %.2g); %s%s\n",
-                  w.skipped.c_str(), w.errorAdded, bound, w.tolerance, saved, probing);
+                  w.skipped.c_str(), w.errorAdded, bound, w.tolerance,
+                  w.secondsPerPassSkipping <= 0.0 && !w.saved.empty() ? w.saved.c_str() : saved, probing);
     }
   };
 }
