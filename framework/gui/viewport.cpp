@@ -335,8 +335,17 @@ void drawLightPathLabels(AppState& app, ImDrawList* dl, const PaneState& p, Rect
     const float bottom = r.y + static_cast<float>(t.y + t.h) * sy;
     std::vector<std::string> lines{t.name};
     if (t.share >= 0.0) lines.push_back(t.shareText());
-    if (t.relMseWithout >= 0.0) lines.push_back(t.relMseText());
+    // The error without the class only where it fits on one line (small tiles at a projector's UI scale).
+    if (t.relMseWithout >= 0.0 &&
+        ImGui::CalcTextSize(t.relMseText().c_str()).x + 4.0f + 8.0f * ImGui::GetIO().FontGlobalScale <= w)
+      lines.push_back(t.relMseText());
     captionBox(app.overlayRects, dl, x + 2.0f, bottom - 2.0f, lines, IM_COL32(0, 0, 0, 190), w - 4.0f, Anchor::Bottom);
+    const ImVec2 mouse = ImGui::GetIO().MousePos;
+    const float top = r.y + static_cast<float>(t.y) * sy;
+    if (t.share >= 0.0 && t.relMseWithout >= 0.0 && mouse.x >= x && mouse.x < x + w && mouse.y >= top &&
+        mouse.y < bottom)
+      ImGui::SetTooltip("%s: %s of the light\nthe picture without it: relMSE %.2g", t.name.c_str(),
+                        t.shareText().c_str(), t.relMseWithout);
   }
 }
 
