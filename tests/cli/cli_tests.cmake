@@ -151,6 +151,15 @@ lightlab_error_test(grade_missing_task_tests "grade: no task tests at /nope \\(b
 # Study: accuracy against time.
 add_test(NAME cli.study_error_falls_with_light_samples
          COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/study_test.sh ${LL} ${OUT}/study)
+# study effects on a scene named as an argument, small: every technique against ground truth, and the table of the
+# fastest technique within the tolerance and 10x and 100x it.
+add_test(NAME cli.study_effects
+         COMMAND ${LL} --quiet study effects ${SCENES}/whitted_1980.json --width 32 --reference-spp 64
+                 --out ${OUT}/study_effects)
+set_tests_properties(cli.study_effects PROPERTIES PASS_REGULAR_EXPRESSION
+                     "whitted +4 .*relMSE 0\\.001 +relMSE 0\\.01 +relMSE 0\\.1.*whitted_1980\\.json .*wrote .*effects\\.csv")
+lightlab_error_test(study_two_scenes "study: one scene or built-in study at a time"
+                    study ${SCENES}/cornell_box.json ${SCENES}/whitted_1980.json --knob spp=1,2 --out ${OUT}/study_bad)
 lightlab_error_test(study_bad_knob "study: --knob must be NAME=v1,v2,... \\(got 'spp'\\)"
                     study ${SCENES}/cornell_box.json --knob spp --out ${OUT}/study_bad)
 lightlab_error_test(study_unknown_parameter "technique 'raycast' has no parameter 'depth' \\(parameters: "
