@@ -252,6 +252,12 @@ void paneSection(AppState& app, int i) {
     ImGui::TextWrapped("simulates: %s",
                        joinNames(EffectSet::fromBits(needed.bits() & sim.bits()).names()).c_str());
     const EffectSet missed = needed.minus(sim);
+    // The light-path view's numbers in full (the tiles' labels drop the relMSE where it does not fit).
+    if (p.shown.view == PaneView::LightPaths)
+      for (const MosaicTile& t : p.shown.lightPathTiles)
+        if (t.share >= 0.0)
+          ImGui::TextWrapped("%s: %s of the light; without it relMSE %.2g", t.name.c_str(), t.shareText().c_str(),
+                             t.relMseWithout);
     if (!missed.empty())
       ImGui::TextColored(ImVec4(1, 0.7f, 0.3f, 1), "misses: %s%s", joinNames(missed.names()).c_str(),
                          !info.pointLights && !app.scene->lights.empty()

@@ -340,12 +340,6 @@ void drawLightPathLabels(AppState& app, ImDrawList* dl, const PaneState& p, Rect
         ImGui::CalcTextSize(t.relMseText().c_str()).x + 4.0f + 8.0f * ImGui::GetIO().FontGlobalScale <= w)
       lines.push_back(t.relMseText());
     captionBox(app.overlayRects, dl, x + 2.0f, bottom - 2.0f, lines, IM_COL32(0, 0, 0, 190), w - 4.0f, Anchor::Bottom);
-    const ImVec2 mouse = ImGui::GetIO().MousePos;
-    const float top = r.y + static_cast<float>(t.y) * sy;
-    if (t.share >= 0.0 && t.relMseWithout >= 0.0 && mouse.x >= x && mouse.x < x + w && mouse.y >= top &&
-        mouse.y < bottom)
-      ImGui::SetTooltip("%s: %s of the light\nthe picture without it: relMSE %.2g", t.name.c_str(),
-                        t.shareText().c_str(), t.relMseWithout);
   }
 }
 
