@@ -253,11 +253,25 @@ void paneSection(AppState& app, int i) {
                        joinNames(EffectSet::fromBits(needed.bits() & sim.bits()).names()).c_str());
     const EffectSet missed = needed.minus(sim);
     // The light-path view's numbers in full (the tiles' labels drop the relMSE where it does not fit).
-    if (p.shown.view == PaneView::LightPaths)
-      for (const MosaicTile& t : p.shown.lightPathTiles)
-        if (t.share >= 0.0)
-          ImGui::TextWrapped("%s: %s of the light; without it relMSE %.2g", t.name.c_str(), t.shareText().c_str(),
-                             t.relMseWithout);
+    if (p.shown.view == PaneView::LightPaths && p.shown.lightPathTiles.size() > 1 &&
+        ImGui::BeginTable("lightpaths", 3, ImGuiTableFlags_SizingStretchProp)) {
+      ImGui::TableNextRow();
+      for (const char* head : {"light path", "share", "relMSE without"}) {
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(head);
+      }
+      for (const MosaicTile& t : p.shown.lightPathTiles) {
+        if (t.share < 0.0) continue;
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(t.name.c_str());
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(t.shareText().c_str());
+        ImGui::TableNextColumn();
+        ImGui::Text("%.2g", t.relMseWithout);
+      }
+      ImGui::EndTable();
+    }
     if (!missed.empty())
       ImGui::TextColored(ImVec4(1, 0.7f, 0.3f, 1), "misses: %s%s", joinNames(missed.names()).c_str(),
                          !info.pointLights && !app.scene->lights.empty()
