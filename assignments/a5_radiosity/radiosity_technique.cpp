@@ -154,19 +154,21 @@ class Radiosity final : public PixelTechnique {
     char text[256];
     std::snprintf(text, sizeof text, "the shots of %zu of %zu patches, whose unshot light does not show (the "
                   "ambient term stands for it)", patches - std::min(rows, patches), patches);
-    const bool dark = rows == 0 && w.errorAdded == 0.0;
-    w.skipped = dark ? "nothing: no patch emits light (radiosity's light comes from emissive surfaces only)" : text;
-    // The rows not computed would have cost what the computed ones did on average (rows dominate a shot).
-    const double savedSeconds =
-        rows > 0 ? shootingSeconds_ / static_cast<double>(rows) * static_cast<double>(patches - std::min(rows, patches))
-                 : 0.0;
-    std::snprintf(text, sizeof text,
-                  "%zu of %zu hemicube rows computed (%.0f %% of the form factors not: about %.2g s, estimated from "
-                  "the %.2g s the computed ones took)",
-                  rows, patches,
-                  patches ? 100.0 * (1.0 - static_cast<double>(rows) / static_cast<double>(patches)) : 0.0,
-                  savedSeconds, shootingSeconds_);
-    if (!dark) w.saved = text;
+    if (rows == 0 && w.errorAdded == 0.0) {
+      w.skipped = "nothing: no patch emits light (radiosity's light comes from emissive surfaces only)";
+    } else {
+      w.skipped = text;
+      // The rows not computed would have cost what the computed ones did on average (rows dominate a shot).
+      const size_t notComputed = patches - std::min(rows, patches);
+      const double savedSeconds =
+          rows > 0 ? shootingSeconds_ / static_cast<double>(rows) * static_cast<double>(notComputed) : 0.0;
+      std::snprintf(text, sizeof text,
+                    "%zu of %zu hemicube rows computed (%.0f %% of the form factors not: about %.2g s, estimated "
+                    "from the %.2g s the computed ones took)",
+                    rows, patches, patches ? 100.0 * static_cast<double>(notComputed) / static_cast<double>(patches) : 0.0,
+                    savedSeconds, shootingSeconds_);
+      w.saved = text;
+    }
     skipped_ = w;
   }
 

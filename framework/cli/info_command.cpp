@@ -219,8 +219,7 @@ Command addInfoCommand(CLI::App& app, const GlobalOptions& global) {
                 cheapest ? cheapest->name.c_str() : "(no registered technique simulates all of these effects)");
     for (const TechniqueInfo& t : techniques()) {
       const EffectSet missed = scene.effects.minus(t.simulatesIn(scene));
-      std::string line = missed.empty() ? "simulates all" : "misses " + joinNames(missed.names());
-      if (!t.pointLights && !scene.lights.empty()) line += " (its light comes from emissive surfaces only, not point lights)";
+      std::string line = (missed.empty() ? "simulates all" : "misses " + joinNames(missed.names())) + t.lightsNote(scene);
       for (const TechniqueInfo::ParamEffect& e : t.onlyWith) {  // "path ... dispersion: with --set spectral=true"
         const EffectSet needs = EffectSet::fromBits(scene.effects.bits() & e.effects.bits());
         if (!needs.empty()) line += " (" + joinNames(needs.names()) + ": with --set " + e.param + "=" + e.value + ")";

@@ -147,7 +147,7 @@ Command addRenderCommand(CLI::App& app, const GlobalOptions& global) {
       std::fprintf(stderr, "lightlab: %s: %s\n", id.c_str(), what.c_str());
     if (!stats.referenceTasks.empty())
       std::fprintf(stderr, "lightlab: by their reference (--reference): %s\n", stats.referenceTasks.c_str());
-    if (!s.technique->pointLights && !s.scene.lights.empty())
+    if (s.technique->ignoresLightsOf(s.scene))
       std::fprintf(stderr, "lightlab: %s lights the scene by its emissive surfaces only; the scene's %zu point or "
                    "directional light(s) light nothing here (give an object \"emission\" for an area light)\n",
                    s.technique->name.c_str(), s.scene.lights.size());
@@ -166,21 +166,24 @@ Command addRenderCommand(CLI::App& app, const GlobalOptions& global) {
                   classLine.c_str());
     if (stats.skipped) {
       const SkippedWork& w = *stats.skipped;
-      char saved[128] = "no time saved";
-      const double fraction = w.secondsPerPassFull > 0.0 ? 1.0 - w.secondsPerPassSkipping / w.secondsPerPassFull : 0.0;
-      if (w.secondsPerPassSkipping > 0.0 && fraction >= 0.05)
-        std::snprintf(saved, sizeof saved, "%.0f %% less time per sample (measured on the probe)", 100.0 * fraction);
-      else if (w.secondsPerPassSkipping > 0.0)  // within the timing noise of a small probe
-        std::snprintf(saved, sizeof saved, "no measurable time saved (%.2g against %.2g s per sample on the probe)",
-                      w.secondsPerPassSkipping, w.secondsPerPassFull);
-
+      // Timed on the probe (path), or counted by the technique (radiosity's rows), or nothing saved.
+      std::string saved = w.saved.empty() ? "no time saved" : w.saved;
+      if (w.secondsPerPassSkipping > 0.0 && w.secondsPerPassFull > 0.0) {
+        const double fraction = 1.0 - w.secondsPerPassSkipping / w.secondsPerPassFull;
+        char text[128];
+        if (fraction >= 0.05)
+          std::snprintf(text, sizeof text, "%.0f %% less time per sample (measured on the probe)", 100.0 * fraction);
+        else  // within the timing noise of a small probe
+          std::snprintf(text, sizeof text, "no measurable time saved (%.2g against %.2g s per sample on the probe)",
+                        w.secondsPerPassSkipping, w.secondsPerPassFull);
+        saved = text;
+      }
       char bound[64] = "";  // a probe's estimate has an interval; a measured or estimated value has none
       if (w.errorAddedHigh != w.errorAdded) std::snprintf(bound, sizeof bound, "95 %% bound %.2g, ", w.errorAddedHigh);
       char probing[48] = "";
       if (w.probeSeconds > 0.0) std::snprintf(probing, sizeof probing, "; %.1f s of probing", w.probeSeconds);
       std::printf("effects=measured: left out %s; error added relMSE %.2g (%stolerance %.2g); %s%s\n",
-                  w.skipped.c_str(), w.errorAdded, bound, w.tolerance,
-                  w.secondsPerPassSkipping <= 0.0 && !w.saved.empty() ? w.saved.c_str() : saved, probing);
+                  w.skipped.c_str(), w.errorAdded, bound, w.tolerance, saved.c_str(), probing);
     }
   };
 }

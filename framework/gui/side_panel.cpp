@@ -274,9 +274,7 @@ void paneSection(AppState& app, int i) {
     }
     if (!missed.empty())
       ImGui::TextColored(ImVec4(1, 0.7f, 0.3f, 1), "misses: %s%s", joinNames(missed.names()).c_str(),
-                         !info.pointLights && !app.scene->lights.empty()
-                             ? " (its light comes from emissive surfaces only, not point lights)"
-                             : "");
+                         info.lightsNote(*app.scene));
   }
   statsTable(p);
   if (p.hasError)

@@ -46,18 +46,23 @@ const TechniqueInfo& findTechnique(const std::string& name) {
   throwUserError("unknown technique '" + name + "' (known: " + joinNames(techniqueNames()) + ")");
 }
 
-const TechniqueInfo* cheapestTechniqueFor(EffectSet needed) {
+namespace {
+// The cheapest CPU technique (GPU ones need a display) whose simulated effects `simulated(t)` contain `needed`.
+template <typename Simulated>
+const TechniqueInfo* cheapestWhere(EffectSet needed, Simulated simulated) {
   const TechniqueInfo* best = nullptr;
   for (const auto& t : techniques())
-    if (!t.gpu && t.simulates.contains(needed) && (!best || t.cost < best->cost)) best = &t;  // GPU ones need a display
+    if (!t.gpu && simulated(t).contains(needed) && (!best || t.cost < best->cost)) best = &t;
   return best;
+}
+}  // namespace
+
+const TechniqueInfo* cheapestTechniqueFor(EffectSet needed) {
+  return cheapestWhere(needed, [](const TechniqueInfo& t) { return t.simulates; });
 }
 
 const TechniqueInfo* cheapestTechniqueFor(const Scene& scene) {
-  const TechniqueInfo* best = nullptr;
-  for (const auto& t : techniques())
-    if (!t.gpu && t.simulatesIn(scene).contains(scene.effects) && (!best || t.cost < best->cost)) best = &t;
-  return best;
+  return cheapestWhere(scene.effects, [&](const TechniqueInfo& t) { return t.simulatesIn(scene); });
 }
 
 std::unique_ptr<Accelerator> buildAccelerator(const AcceleratorInfo& info, const ParamSet& params,

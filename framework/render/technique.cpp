@@ -30,9 +30,13 @@ EffectSet TechniqueInfo::simulatesWith(const ParamSet& values) const {
 
 EffectSet TechniqueInfo::simulatesIn(const Scene& scene, const ParamSet& values) const {
   const EffectSet s = simulatesWith(values);
-  if (pointLights || scene.lights.empty()) return s;
+  if (!ignoresLightsOf(scene)) return s;
   return s.minus(EffectSet{Effect::DirectLighting, Effect::HardShadows, Effect::DiffuseInterreflection,
                            Effect::GlossyHighlights, Effect::Caustics});
+}
+
+const char* TechniqueInfo::lightsNote(const Scene& scene) const {
+  return ignoresLightsOf(scene) ? " (its light comes from emissive surfaces only, not point lights)" : "";
 }
 
 namespace {

@@ -144,6 +144,10 @@ struct TechniqueInfo {
   // hard shadows, and what bounces on from them) wherever a scene has one.
   EffectSet simulatesIn(const Scene& scene, const ParamSet& values) const;
   EffectSet simulatesIn(const Scene& scene) const { return simulatesIn(scene, ParamSet{}); }
+  // Whether the scene has point or directional lights this technique ignores.
+  bool ignoresLightsOf(const Scene& scene) const { return !pointLights && !scene.lights.empty(); }
+  // " (its light comes from emissive surfaces only, not point lights)" where it does, else "".
+  const char* lightsNote(const Scene& scene) const;
 };
 
 }  // namespace ll
