@@ -71,8 +71,8 @@ class Builder {
     const Plane plane = bestPlane(prims, cell);
     const float leafCost = s_.intersectionCost * static_cast<float>(n);
     if (!plane.found()) return makeLeaf(index, prims, area);
-    if (plane.cost >= leafCost) ++badRefines;  // as the KD-tree: a few uphill splits out of local minima
-    if ((plane.cost > 4.0f * leafCost && n < 16) || badRefines >= 3) return makeLeaf(index, prims, area);
+    if (plane.cost >= leafCost) ++badRefines;  // as the KD-tree: a few uphill splits, none below 16 primitives
+    if ((plane.cost >= leafCost && n < 16) || badRefines >= 3) return makeLeaf(index, prims, area);
 
     ConvexCell cellBelow, cellAbove;
     cell.split(plane.normal, plane.offset, cellBelow, cellAbove);

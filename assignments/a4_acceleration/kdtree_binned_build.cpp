@@ -54,8 +54,8 @@ class Builder {
     const Plane plane = bestPlane(prims, cell, few);
     const float leafCost = s_.intersectionCost * static_cast<float>(n);
     if (plane.axis < 0 || (few && plane.cost >= leafCost)) return makeLeaf(index, prims, area);
-    if (plane.cost >= leafCost) ++badRefines;  // PBRT: allow a few uphill splits to get out of local minima
-    if ((plane.cost > 4.0f * leafCost && n < 16) || badRefines >= 3) return makeLeaf(index, prims, area);
+    if (plane.cost >= leafCost) ++badRefines;  // PBRT: a few uphill splits out of local minima; none below 16 primitives
+    if ((plane.cost >= leafCost && n < 16) || badRefines >= 3) return makeLeaf(index, prims, area);
 
     // Partition: below if the box starts below the plane, above if it ends
     // above it; a box lying in the plane (planar primitive) goes above. So

@@ -155,8 +155,10 @@ class Builder {
     const Plane plane = bestPlane(in, cell, few);
     const float leafCost = s_.intersectionCost * static_cast<float>(n);
     if (plane.axis < 0 || (few && plane.cost >= leafCost)) return makeLeaf(index, in.prims, area);
-    if (plane.cost >= leafCost) ++badRefines;  // PBRT: allow a few uphill splits to get out of local minima
-    if ((plane.cost > 4.0f * leafCost && n < 16) || badRefines >= 3) return makeLeaf(index, in.prims, area);
+    // PBRT allows a few uphill splits to get out of local minima; not below 16 primitives, where they
+    // only multiplied nodes (235k bunny: 3.4 M -> 2.0 M nodes, SAH cost within 0.4 %, render time alike).
+    if (plane.cost >= leafCost) ++badRefines;
+    if ((plane.cost >= leafCost && n < 16) || badRefines >= 3) return makeLeaf(index, in.prims, area);
 
     const int a = plane.axis;
     Bounds3 cellBelow = cell, cellAbove = cell;
