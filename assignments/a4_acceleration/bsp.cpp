@@ -10,13 +10,18 @@
 // the exact convex cell (ConvexCell). A primitive goes to every side it
 // comes within `pad` of, so a hit near a plane is in both cells whatever the
 // rounding, unless its box misses that side's cell. Written depth-first into
-// 24-byte nodes.
+// 24-byte nodes; large nodes build their two subtrees in parallel (oneTBB),
+// each into its own arrays, spliced together after (the same tree as one
+// thread builds).
 #include "bsp.h"
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <string>
+
+#include <tbb/parallel_invoke.h>
 
 #include "bsp_cell.h"
 #include "core/phase_progress.h"
@@ -45,28 +50,45 @@ bool overlaps(const Bounds3& a, const Bounds3& b) {
          a.min.z <= b.max.z && b.min.z <= a.max.z;
 }
 
+// Shared by the builders of one tree (the parallel subtrees'): read-only but the node counter.
+struct Shared {
+  const BspTree& tree;  // its triangles by primitive id
+  const BspSettings& settings;
+  int maxDepth;
+  float pad;  // world-space distance within which a primitive counts as touching a plane (>> rounding)
+  std::vector<Bounds3> boxes;  // by primitive id
+  const PhaseSink* sink;       // the calling thread's progress sink (thread-safe), or null
+  std::atomic<size_t> nodes{0};
+};
+
+// Nodes with at least this many primitives build their subtrees in parallel.
+constexpr size_t kParallelPrimitives = 8192;
+
 class Builder {
  public:
-  // pad: world-space distance within which a primitive counts as touching a plane (>> rounding).
-  Builder(BspTree& tree, const BspSettings& s, int maxDepth, float pad)
-      : tree_(tree), s_(s), maxDepth_(maxDepth), pad_(pad) {
-    const Geometry& g = *tree.geometry;
-    boxes_.resize(g.primitiveCount());
-    for (uint32_t p = 0; p < g.primitiveCount(); ++p) boxes_[p] = g.bounds(p);
-  }
+  explicit Builder(Shared& shared)
+      : sh_(shared), tree_(shared.tree), s_(shared.settings), maxDepth_(shared.maxDepth), pad_(shared.pad),
+        boxes_(shared.boxes) {}
 
-  // Appends the subtree of `cell` holding `prims` (consumed). depth: edges
-  // from the root; splits: of those, the ones with primitives on both sides.
+  // Appends the subtree of `cell` holding `prims` (consumed) to nodes_ and
+  // slots_. depth: edges from the root; splits: of those, the ones with
+  // primitives on both sides.
   void build(std::vector<uint32_t>& prims, const ConvexCell& cell, int depth, int splits, int badRefines) {
-    const auto index = static_cast<uint32_t>(tree_.nodes.size());
-    tree_.nodes.emplace_back();
-    // Where a GUI pane's newer request cancels the build (its phase report throws).
-    if ((index & 0x3FF) == 0) reportPhase("BSP tree build (" + std::to_string(index) + " nodes)");
+    const auto index = static_cast<uint32_t>(nodes_.size());
+    nodes_.emplace_back();
+    // Nodes made by every builder, counted in batches and reported, which is also where a GUI pane's newer
+    // request cancels the build (its phase report throws).
+    if ((++unreported_ & 0x3FF) == 0) {
+      const size_t made = sh_.nodes.fetch_add(unreported_, std::memory_order_relaxed) + unreported_;
+      unreported_ = 0;
+      if (sh_.sink) (*sh_.sink)("BSP tree build (" + std::to_string(made) + " nodes)", -1.0);
+    }
+    const size_t made = sh_.nodes.load(std::memory_order_relaxed) + nodes_.size();
     depth_ = std::max(depth_, depth);
     const size_t n = prims.size();
     const float area = cell.area();
     if (n <= static_cast<size_t>(s_.maxLeaf) || splits >= maxDepth_ || depth >= kBspMaxDepth ||
-        tree_.nodes.size() + 2 > kBspMaxNodes || !(area > 0.0f))
+        made + 2 > kBspMaxNodes || !(area > 0.0f))
       return makeLeaf(index, prims, area);
     const Plane plane = bestPlane(prims, cell);
     const float leafCost = s_.intersectionCost * static_cast<float>(n);
@@ -99,8 +121,17 @@ class Builder {
     sah_ += static_cast<double>(s_.traversalCost) * static_cast<double>(area);
     ++(plane.fromTriangle ? trianglePlanes_ : axisPlanes_);
     const int nextSplits = splits + (below.empty() || above.empty() ? 0 : 1);
+    if (n >= kParallelPrimitives && !below.empty() && !above.empty()) {
+      Builder builderBelow(sh_), builderAbove(sh_);
+      tbb::parallel_invoke([&] { builderBelow.build(below, cellBelow, depth + 1, nextSplits, badRefines); },
+                           [&] { builderAbove.build(above, cellAbove, depth + 1, nextSplits, badRefines); });
+      splice(builderBelow);
+      nodes_[index] = BspNode::interior(plane.normal, plane.offset, static_cast<uint32_t>(nodes_.size()));
+      splice(builderAbove);
+      return;
+    }
     build(below, cellBelow, depth + 1, nextSplits, badRefines);
-    tree_.nodes[index] = BspNode::interior(plane.normal, plane.offset, static_cast<uint32_t>(tree_.nodes.size()));
+    nodes_[index] = BspNode::interior(plane.normal, plane.offset, static_cast<uint32_t>(nodes_.size()));
     build(above, cellAbove, depth + 1, nextSplits, badRefines);
   }
 
@@ -109,7 +140,24 @@ class Builder {
   size_t trianglePlanes() const { return trianglePlanes_; }
   size_t axisPlanes() const { return axisPlanes_; }
 
+  std::vector<BspNode> nodes_;   // subtree in depth-first order; aboveChild indices within it
+  std::vector<uint32_t> slots_;  // leaf slots; leaves' first slot within it
+
  private:
+  // Appends a subtree built by another builder, its indices moved to where it lands.
+  void splice(const Builder& sub) {
+    const auto nodeOffset = static_cast<uint32_t>(nodes_.size()), slotOffset = static_cast<uint32_t>(slots_.size());
+    for (BspNode node : sub.nodes_) {
+      node.word += node.isLeaf() ? slotOffset : nodeOffset;  // first slot or aboveChild
+      nodes_.push_back(node);
+    }
+    slots_.insert(slots_.end(), sub.slots_.begin(), sub.slots_.end());
+    depth_ = std::max(depth_, sub.depth_);
+    sah_ += sub.sah_;
+    trianglePlanes_ += sub.trianglePlanes_;
+    axisPlanes_ += sub.axisPlanes_;
+  }
+
   // The range of dot(normal, x) - offset over primitive p (its vertices, or its box for other kinds).
   std::pair<float, float> extent(uint32_t p, const Vec3& normal, float offset) const {
     if (p < tree_.triangleCount) {
@@ -132,9 +180,8 @@ class Builder {
   }
 
   void makeLeaf(uint32_t index, const std::vector<uint32_t>& prims, float area) {
-    tree_.nodes[index] =
-        BspNode::leafNode(static_cast<uint32_t>(tree_.primIds.size()), static_cast<uint32_t>(prims.size()));
-    tree_.primIds.insert(tree_.primIds.end(), prims.begin(), prims.end());
+    nodes_[index] = BspNode::leafNode(static_cast<uint32_t>(slots_.size()), static_cast<uint32_t>(prims.size()));
+    slots_.insert(slots_.end(), prims.begin(), prims.end());
     sah_ += static_cast<double>(s_.intersectionCost) * static_cast<double>(prims.size()) * static_cast<double>(area);
   }
 
@@ -238,14 +285,16 @@ class Builder {
     return best;
   }
 
-  BspTree& tree_;
+  Shared& sh_;
+  const BspTree& tree_;
   const BspSettings& s_;
   int maxDepth_;
   float pad_;
-  std::vector<Bounds3> boxes_;  // by primitive id
+  const std::vector<Bounds3>& boxes_;  // by primitive id
   int depth_ = 0;
   double sah_ = 0.0;
   size_t trianglePlanes_ = 0, axisPlanes_ = 0;
+  size_t unreported_ = 0;  // nodes made since the last report
 };
 
 }  // namespace
@@ -272,8 +321,12 @@ BspTree buildBspTree(const Geometry& geometry, const BspSettings& settings, BspB
     root.min -= Vec3(pad);
     root.max += Vec3(pad);
     const ConvexCell rootCell = ConvexCell::box(root);
-    Builder builder(tree, settings, maxDepth, pad);
+    Shared shared{tree, settings, maxDepth, pad, std::vector<Bounds3>(n), currentPhaseSink()};
+    for (uint32_t p = 0; p < n; ++p) shared.boxes[p] = geometry.bounds(p);
+    Builder builder(shared);
     builder.build(prims, rootCell, 0, 0, 0);
+    tree.nodes = std::move(builder.nodes_);
+    tree.primIds = std::move(builder.slots_);
     result.depth = builder.depth();
     result.sahCost = builder.sahSum() / static_cast<double>(rootCell.area());
     result.trianglePlanes = builder.trianglePlanes();
