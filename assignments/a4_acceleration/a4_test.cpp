@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <memory>
 #include <random>
 #include <string>
@@ -957,6 +958,43 @@ TEST(A4_Bsp, CutsByTrianglePlanesAndItsCellsTileTheScene) {
   EXPECT_EQ(accel->nodesAtDepth(0).size(), 1u);
   EXPECT_EQ(accel->nodesAtDepth(1).size(), 2u);
   for (const NodeShape& c : accel->nodesAtDepth(4)) EXPECT_GE(c.edges.size(), 12u);  // at least a tetrahedron's 4 x 3
+}
+
+// The BSP build's subtrees built apart (nodes of 8192 primitives or more, in parallel) are spliced into
+// one well-formed tree -- every above child after its node, the leaves' slot ranges tiling the slots
+// in order, every primitive in a leaf -- and make the same tree on one thread as on all: node for node,
+// the same slots and statistics (a 19k-triangle sphere: its top levels are built apart).
+TEST(A4_Bsp, SplicedSubtreesMakeOneTreeTheSameOnAnyThreadCount) {
+  const Geometry g = cubeSphere(40);
+  ASSERT_GE(g.primitiveCount(), 2u * 8192u);
+  a4::BspBuildInfo info, serialInfo;
+  const a4::BspTree tree = a4::buildBspTree(g, {}, &info);
+  uint32_t nextSlot = 0;  // depth-first order writes the leaves' slots in order
+  std::vector<int> seen(g.primitiveCount(), 0);
+  for (size_t i = 0; i < tree.nodes.size(); ++i) {
+    const a4::BspNode& n = tree.nodes[i];
+    if (!n.isLeaf()) {
+      ASSERT_GT(n.aboveChild(), i + 1) << "node " << i;
+      ASSERT_LT(n.aboveChild(), tree.nodes.size()) << "node " << i;
+      continue;
+    }
+    ASSERT_EQ(n.first(), nextSlot) << "node " << i;
+    nextSlot += n.count();
+    ASSERT_LE(nextSlot, tree.primIds.size());
+    for (uint32_t k = n.first(); k < nextSlot; ++k) ++seen[tree.primIds[k]];
+  }
+  EXPECT_EQ(nextSlot, tree.primIds.size());
+  EXPECT_EQ(std::count(seen.begin(), seen.end(), 0), 0) << "primitives in no leaf";
+  const tbb::global_control oneThread(tbb::global_control::max_allowed_parallelism, 1);
+  const a4::BspTree serial = a4::buildBspTree(g, {}, &serialInfo);
+  ASSERT_EQ(serial.nodes.size(), tree.nodes.size());
+  for (size_t i = 0; i < tree.nodes.size(); ++i)
+    ASSERT_EQ(std::memcmp(&serial.nodes[i], &tree.nodes[i], sizeof(a4::BspNode)), 0) << "node " << i;
+  EXPECT_EQ(serial.primIds, tree.primIds);
+  EXPECT_EQ(serialInfo.depth, info.depth);
+  EXPECT_EQ(serialInfo.trianglePlanes, info.trianglePlanes);
+  EXPECT_EQ(serialInfo.axisPlanes, info.axisPlanes);
+  EXPECT_NEAR(serialInfo.sahCost, info.sahCost, 1e-9 * info.sahCost);  // (sums in another order)
 }
 
 TEST(A4_Stubs, KdTreeAndOctreeStayCorrectWhateverIsMissing) {
