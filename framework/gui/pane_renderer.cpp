@@ -187,7 +187,11 @@ void PaneRenderer::render(const RenderRequest& request, uint64_t id) {
   if (s.phase != PaneSnapshot::Phase::Building) s.phase = PaneSnapshot::Phase::Rendering;
   publish(s);
   // What the technique and the tiles report (ProgressBar, reportPhase) goes to this pane.
-  const PhaseSink sink = [this, id](const std::string& phase, double fraction) { setPhase(id, phase, fraction); };
+  // A preview's passes are shown as the preview's progress, not as the first of the real passes.
+  std::atomic<bool> inPreview{false};
+  const PhaseSink sink = [this, id, &inPreview](const std::string& phase, double fraction) {
+    setPhase(id, inPreview && phase == "pass" ? "preview" : phase, fraction);
+  };
   const ScopedPhaseSink scopedSink(&sink);
 
   // The accelerator: rebuilt only when the scene or its own settings change.
@@ -246,7 +250,9 @@ void PaneRenderer::render(const RenderRequest& request, uint64_t id) {
       s.totalPasses = settings.spp;  // the usual pass count, until the job says otherwise
     }
     publish(s);
-    setPhase(id, preview ? "preview" : "pass", preview ? -1.0 : 0.0);
+    inPreview = preview;
+    // Until the technique reports its own phases (radiosity's form factors) and the job its first pass.
+    setPhase(id, preview ? "preview" : "preparing " + techInfo.name, -1.0);
     const Timer timer;
     job.run([&](int done, int total) {
       s.lightPathTiles.clear();

@@ -1,5 +1,6 @@
 #include "render/render_job.h"
 
+#include "core/phase_progress.h"
 #include "core/timer.h"
 #include "tasks/task_modes.h"
 
@@ -25,6 +26,7 @@ void RenderJob::run(const std::function<void(int, int)>& onPass) {
   // (After prepare(): whether a technique can split may depend on its parameters, e.g. radiosity's solver.)
   if (settings_.lightPaths && technique_.splitsLightPaths()) frame_.enableLightPaths();
   const int total = technique_.passCount(ctx);
+  reportPhase("pass", 0.0);  // the preparation is over (a GUI pane's caption; nothing without a sink)
   const Timer timer;
   for (int pass = 0; pass < total && !cancel_; ++pass) {
     const ScopedTaskLog scoped(&taskLog_);
