@@ -39,9 +39,6 @@ fi
 # Copies of the tree that the tests build (student tree, planted bugs) sit at
 # <copy>/build like this one at <root>/build: relative paths make ccache reuse objects.
 export CCACHE_BASEDIR=$root
-# The task modules share a precompiled header (cmake/LightlabTaskModules.cmake): ccache caches those
-# compiles only with these (without, each build and each grading recompiled them: 6 s per grading).
-export CCACHE_SLOPPINESS=${CCACHE_SLOPPINESS:-pch_defines,time_macros,include_file_mtime,include_file_ctime}
 werror=OFF
 [ "${CI:-}" = "true" ] && werror=ON
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER_LAUNCHER=ccache \

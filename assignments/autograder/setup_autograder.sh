@@ -14,8 +14,6 @@ build=${1:-$root/build}
 [ -f "$root/assignments/reference/lib/liblightlab_private.a" ] ||
   { echo "setup_autograder: $root is not a student tree (assignments/make_student_tree.sh makes one)" >&2; exit 2; }
 bash "$root/.ci/setup.sh" install
-# ccache (when the build uses it) caches the task modules' precompiled-header compiles only with these.
-export CCACHE_SLOPPINESS=${CCACHE_SLOPPINESS:-pch_defines,time_macros,include_file_mtime,include_file_ctime}
 if [ ! -f "$build/CMakeCache.txt" ]; then  # an existing build (the student's own) keeps its settings
   launcher=()
   command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
