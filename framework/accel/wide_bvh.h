@@ -91,7 +91,7 @@ struct WideBvh {
   Vec3 sceneCentre{0.0f};                  // a sphere around every primitive (world space), for rounding bounds
   float sceneRadius = 0.0f;
   int depth = 0;         // edges on the longest root-to-leaf path (a leaf child of the root: 1)
-  double sahCost = 0.0;  // expected cost per ray: one unit per 4-wide node visited and per primitive tested
+  double sahCost = 0.0;  // expected cost per ray: one unit per 4-wide node visited and per packet tested
   size_t memoryBytes() const {
     return nodes.capacity() * sizeof(WideBvhNode) + packets.capacity() * sizeof(WideBvhPacket);
   }
