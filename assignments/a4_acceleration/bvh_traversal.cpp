@@ -56,6 +56,9 @@ bool traverse(const FlatBvh& bvh, const TraversalRay& r, Hit& hit, QueryCounters
       float ta, tb;
       const bool hitA = enters<V>(r, nodes[a], tLimit, ta);
       const bool hitB = enters<V>(r, nodes[b], tLimit, tb);
+      // The far child of a node entered is the next cache miss: start loading it now.
+      if (hitA && !nodes[a].isLeaf()) __builtin_prefetch(&nodes[nodes[a].offset]);
+      if (hitB && !nodes[b].isLeaf()) __builtin_prefetch(&nodes[nodes[b].offset]);
       if (hitA && hitB) {
         if (tb < ta) {
           stack[sp++] = {a, ta};
