@@ -180,6 +180,38 @@ TEST(PaneRenderer, APassReportsItsProgressTileByTile) {
   EXPECT_GE(percents.size(), 2u) << "the pass's fraction should rise while it renders";
 }
 
+// Until its first pass starts, a pane says it is preparing, never "pass": radiosity's meshing comes before
+// its form factors, and a caption of "pass 1/1  0 %" there would misreport what the lecture hall waits for.
+TEST(PaneRenderer, ThePhaseSaysPreparingUntilTheFirstPassStarts) {
+  const auto scene = std::make_shared<const Scene>(loadScene(kScenes + "cornell_box.json"));
+  PaneRenderer pane;
+  RenderRequest r = request(scene, 1, 1);
+  r.technique = "radiosity";
+  r.techniqueParams = ParamSet("technique 'radiosity'", findTechnique("radiosity").params);
+  r.techniqueParams.set("patch_size", "0.08");
+  r.settings.width = r.settings.height = 16;  // too small for a preview: one job
+  const uint64_t id = pane.submit(r);
+  std::vector<std::string> phases;  // in the order seen, each once
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (!pane.finished() && std::chrono::steady_clock::now() < deadline) {
+    const PaneSnapshot s = pane.snapshot();
+    if (s.request == id && !s.phaseName.empty() && (phases.empty() || phases.back() != s.phaseName))
+      phases.push_back(s.phaseName);
+    std::this_thread::sleep_for(std::chrono::microseconds(200));
+  }
+  ASSERT_TRUE(pane.finished());
+  std::string seen;
+  for (const auto& p : phases) seen += "'" + p + "' ";
+  const auto firstPass = std::find(phases.begin(), phases.end(), "pass");
+  ASSERT_NE(firstPass, phases.end()) << seen;
+  const auto formFactors = std::find_if(phases.begin(), phases.end(),
+                                        [](const std::string& p) { return p.rfind("form factors", 0) == 0; });
+  ASSERT_NE(formFactors, phases.end()) << seen;
+  EXPECT_LT(formFactors, firstPass) << seen;
+  EXPECT_EQ(std::find(firstPass + 1, phases.end(), "preparing radiosity"), phases.end()) << seen;
+  EXPECT_EQ(pane.snapshot().phase, PaneSnapshot::Phase::Done);
+}
+
 TEST(PaneRenderer, ALongRadiositySolveStopsWhenANewRequestArrives) {
   const auto scene = std::make_shared<const Scene>(loadScene(kScenes + "cornell_box.json"));
   PaneRenderer pane;
