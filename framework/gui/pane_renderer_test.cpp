@@ -38,6 +38,16 @@ RenderRequest request(const std::shared_ptr<const Scene>& scene, int lightSample
   return r;
 }
 
+// A radiosity request (raycast's defaults otherwise) with technique parameter `name` set to `value`.
+RenderRequest radiosityRequest(const std::shared_ptr<const Scene>& scene, const std::string& name,
+                               const std::string& value) {
+  RenderRequest r = request(scene, 1, 1);
+  r.technique = "radiosity";
+  r.techniqueParams = ParamSet("technique 'radiosity'", findTechnique("radiosity").params);
+  if (!name.empty()) r.techniqueParams.set(name, value);
+  return r;
+}
+
 Image headless(const RenderRequest& r) {
   const auto accel =
       buildAccelerator(findAccelerator(r.accelerator), r.accelParams, r.scene->geometry);
@@ -130,10 +140,7 @@ TEST(PaneRenderer, ASwitchOfTechniqueNeverShowsThePreviousTechniquesImage) {
   EXPECT_EQ(pane.snapshot().imageShows, "raycast");
   const uint64_t before = pane.snapshot().version;
   // Radiosity first meshes and computes form factors (seconds): meanwhile no image, and the phase says what runs.
-  RenderRequest r = request(scene, 1, 1);
-  r.technique = "radiosity";
-  r.techniqueParams = ParamSet("technique 'radiosity'", findTechnique("radiosity").params);
-  r.techniqueParams.set("patch_size", "0.08");
+  RenderRequest r = radiosityRequest(scene, "patch_size", "0.08");
   const uint64_t id = pane.submit(r);
   std::set<std::string> phases;
   bool sawOldImage = false;
@@ -185,15 +192,13 @@ TEST(PaneRenderer, APassReportsItsProgressTileByTile) {
 TEST(PaneRenderer, ThePhaseSaysPreparingUntilTheFirstPassStarts) {
   const auto scene = std::make_shared<const Scene>(loadScene(kScenes + "cornell_box.json"));
   PaneRenderer pane;
-  RenderRequest r = request(scene, 1, 1);
-  r.technique = "radiosity";
-  r.techniqueParams = ParamSet("technique 'radiosity'", findTechnique("radiosity").params);
-  r.techniqueParams.set("patch_size", "0.08");
+  RenderRequest r = radiosityRequest(scene, "patch_size", "0.08");
   r.settings.width = r.settings.height = 16;  // too small for a preview: one job
   const uint64_t id = pane.submit(r);
   std::vector<std::string> phases;  // in the order seen, each once
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
-  while (!pane.finished() && std::chrono::steady_clock::now() < deadline) {
+  for (bool done = false; !done && std::chrono::steady_clock::now() < deadline;) {
+    done = pane.finished();  // then one more look: the phase the request ended in
     const PaneSnapshot s = pane.snapshot();
     if (s.request == id && !s.phaseName.empty() && (phases.empty() || phases.back() != s.phaseName))
       phases.push_back(s.phaseName);
@@ -216,10 +221,7 @@ TEST(PaneRenderer, ALongRadiositySolveStopsWhenANewRequestArrives) {
   const auto scene = std::make_shared<const Scene>(loadScene(kScenes + "cornell_box.json"));
   PaneRenderer pane;
   // Hemicubes of 128 x 128 cells for 7488 patches: a minute or more of form factors.
-  RenderRequest slow = request(scene, 1, 1);
-  slow.technique = "radiosity";
-  slow.techniqueParams = ParamSet("technique 'radiosity'", findTechnique("radiosity").params);
-  slow.techniqueParams.set("hemicube_res", "128");
+  const RenderRequest slow = radiosityRequest(scene, "hemicube_res", "128");
   const auto waitForFormFactors = [&](uint64_t id) {
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
     while (!(pane.snapshot().request == id && !pane.snapshot().phaseName.empty()) &&
@@ -292,11 +294,9 @@ TEST(PaneRenderer, SwitchingAwayFromRadiosityOnTheBigBunnyTakesEffectWithinTwoSe
   const std::string path = std::string(LIGHTLAB_BUILD_DATA_DIR) + "/scenes/cornell_bunny_235k.json";
   const auto scene = std::make_shared<const Scene>(loadScene(path));
   PaneRenderer pane;
-  RenderRequest slow = request(scene, 1, 1);
-  slow.technique = "radiosity";
+  RenderRequest slow = radiosityRequest(scene, "", "");
   slow.accelerator = "bvh";
   slow.accelParams = ParamSet("accelerator 'bvh'", findAccelerator("bvh").params);
-  slow.techniqueParams = ParamSet("technique 'radiosity'", findTechnique("radiosity").params);
   RenderRequest fast = request(scene, 1, 1);
   fast.accelerator = "bvh";
   fast.accelParams = slow.accelParams;

@@ -1,6 +1,7 @@
 // RenderJob's phase reports: what a GUI pane's caption shows while a job runs.
 #include "render/render_job.h"
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -23,28 +24,34 @@ class PreparingTechnique final : public Technique {
   void renderPass(const RenderContext&, int, FrameBuffer&, WorkCounters&, const std::atomic<bool>&) override {}
 };
 
+// A 4 x 4 job of PreparingTechnique over the Cornell box, brute force.
+class RenderJobPhases : public ::testing::Test {
+ protected:
+  RenderJob job(int spp) {
+    RenderSettings settings;
+    settings.width = 4;
+    settings.height = 4;
+    settings.spp = spp;
+    return RenderJob(scene_, *none_, technique_, params_, settings);
+  }
+
+ private:
+  const Scene scene_ = loadScene(kScenes + "cornell_box.json");
+  const std::unique_ptr<Accelerator> none_ =
+      buildAccelerator(findAccelerator("none"), ParamSet("none", {}), scene_.geometry);
+  PreparingTechnique technique_;
+  const ParamSet params_{"technique 'test'", {}};
+};
+
 // The job says "pass" (at 0) once its preparation is over and before its first pass -- not before the
 // preparation, where a pane would show "pass 1/N  0 %" while the technique still precomputes.
-TEST(RenderJob, ReportsThePassPhaseAfterThePreparationAndBeforeThePasses) {
-  const Scene scene = loadScene(kScenes + "cornell_box.json");
-  const auto none = buildAccelerator(findAccelerator("none"), ParamSet("none", {}), scene.geometry);
-  PreparingTechnique technique;
-  const ParamSet params("technique 'test'", {});
-  RenderSettings settings;
-  settings.width = 4;
-  settings.height = 4;
-  settings.spp = 2;
-  RenderJob job(scene, *none, technique, params, settings);
+TEST_F(RenderJobPhases, ThePassPhaseComesAfterThePreparationAndBeforeThePasses) {
+  RenderJob twoPasses = job(2);
   std::vector<std::pair<std::string, double>> phases;
   const PhaseSink sink = [&](const std::string& phase, double fraction) { phases.emplace_back(phase, fraction); };
   {
     const ScopedPhaseSink scoped(&sink);
-    int passesSeen = 0;
-    job.run([&](int done, int) {
-      passesSeen = done;
-      phases.emplace_back("(pass done)", static_cast<double>(done));
-    });
-    EXPECT_EQ(passesSeen, 2);
+    twoPasses.run([&](int done, int) { phases.emplace_back("(pass done)", static_cast<double>(done)); });
   }
   const std::vector<std::pair<std::string, double>> expected{
       {"precomputing", 0.5}, {"pass", 0.0}, {"(pass done)", 1.0}, {"(pass done)", 2.0}};
@@ -52,17 +59,10 @@ TEST(RenderJob, ReportsThePassPhaseAfterThePreparationAndBeforeThePasses) {
 }
 
 // Without a sink (the command line), the report goes nowhere and the job renders as before.
-TEST(RenderJob, RunsWithoutAPhaseSink) {
-  const Scene scene = loadScene(kScenes + "cornell_box.json");
-  const auto none = buildAccelerator(findAccelerator("none"), ParamSet("none", {}), scene.geometry);
-  PreparingTechnique technique;
-  const ParamSet params("technique 'test'", {});
-  RenderSettings settings;
-  settings.width = 4;
-  settings.height = 4;
-  RenderJob job(scene, *none, technique, params, settings);
-  job.run();
-  EXPECT_EQ(job.stats().passes, 1);
+TEST_F(RenderJobPhases, AJobRunsWithoutAPhaseSink) {
+  RenderJob onePass = job(1);
+  onePass.run();
+  EXPECT_EQ(onePass.stats().passes, 1);
 }
 
 }  // namespace
