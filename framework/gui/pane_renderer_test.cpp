@@ -38,6 +38,16 @@ RenderRequest request(const std::shared_ptr<const Scene>& scene, int lightSample
   return r;
 }
 
+// While it lives, every radiosity solve is computed anew, whatever ran before in this process (a cached
+// solve goes straight to its pass: no form factors to see).
+struct NoPrecomputationCache {
+  bool was = precomputationCacheEnabled();
+  NoPrecomputationCache() { setPrecomputationCache(false); }
+  ~NoPrecomputationCache() { setPrecomputationCache(was); }
+  NoPrecomputationCache(const NoPrecomputationCache&) = delete;
+  NoPrecomputationCache& operator=(const NoPrecomputationCache&) = delete;
+};
+
 // A radiosity request (raycast's defaults otherwise) with technique parameter `name` set to `value`.
 RenderRequest radiosityRequest(const std::shared_ptr<const Scene>& scene, const std::string& name,
                                const std::string& value) {
@@ -132,6 +142,7 @@ TEST(PaneRenderer, AnErrorIsShownNotThrown) {
 }
 
 TEST(PaneRenderer, ASwitchOfTechniqueNeverShowsThePreviousTechniquesImage) {
+  const NoPrecomputationCache fresh;
   const auto scene = std::make_shared<const Scene>(loadScene(kScenes + "cornell_box.json"));
   PaneRenderer pane;
   pane.submit(request(scene, 1, 1));
@@ -190,6 +201,7 @@ TEST(PaneRenderer, APassReportsItsProgressTileByTile) {
 // Until its first pass starts, a pane says it is preparing, never "pass": radiosity's meshing comes before
 // its form factors, and a caption of "pass 1/1  0 %" there would misreport what the lecture hall waits for.
 TEST(PaneRenderer, ThePhaseSaysPreparingUntilTheFirstPassStarts) {
+  const NoPrecomputationCache fresh;
   const auto scene = std::make_shared<const Scene>(loadScene(kScenes + "cornell_box.json"));
   PaneRenderer pane;
   RenderRequest r = radiosityRequest(scene, "patch_size", "0.08");
