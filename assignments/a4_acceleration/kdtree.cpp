@@ -13,6 +13,10 @@
 #include <cmath>
 #include <utility>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
+
+#include "core/huge_pages.h"
 #include "kdtree_build_support.h"
 
 namespace ll::a4 {
@@ -25,15 +29,26 @@ KdTree buildKdTree(const Geometry& geometry, const KdSettings& settings, KdBuild
   int depth = 0;
   double sah = 0.0;
   if (n > 0) {
-    std::vector<kdbuild::KdPrim> prims(n);
-    for (uint32_t p = 0; p < n; ++p) {
-      prims[p] = {geometry.bounds(p), p};
-      tree.bounds.extend(prims[p].box);
-    }
+    // The boxes and the scene's box: in parallel, as the build.
+    std::vector<kdbuild::KdPrim> prims;
+    resizeOnHugePages(prims, n);
+    tree.bounds = tbb::parallel_reduce(
+        tbb::blocked_range<uint32_t>(0, n, 16384), Bounds3{},
+        [&](const tbb::blocked_range<uint32_t>& r, Bounds3 box) {
+          for (uint32_t p = r.begin(); p < r.end(); ++p) {
+            prims[p] = {geometry.bounds(p), p};
+            box.extend(prims[p].box);
+          }
+          return box;
+        },
+        [](Bounds3 x, const Bounds3& y) {
+          x.extend(y);
+          return x;
+        });
     tree.sceneCentre = tree.bounds.center();
     tree.sceneRadius = 0.5f * tree.bounds.diagonal();
     const int maxDepth = kdbuild::maxSplits(settings.maxDepth, n, kKdMaxDepth);
-    tree.primIds.reserve(2 * static_cast<size_t>(n));
+    if (settings.build == KdBuild::Binned) tree.primIds.reserve(2 * static_cast<size_t>(n));  // the sweep sizes it
     tree.storeTrianglesByPrimitive();
     const float pad = kdbuild::roundingPad(tree.bounds);
     const kdbuild::BuildTotals totals =

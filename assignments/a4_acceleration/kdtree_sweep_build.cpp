@@ -18,16 +18,22 @@
 // where a box lying in the plane goes: to the cheaper side (Wald and Havran's
 // p_side), where the binned build always sends it above.
 // Large nodes build their two subtrees in parallel (oneTBB), each into its
-// own node array, spliced together after.
+// own node array, with a link where the subtree goes; the tree is written
+// out once at the end, straight into its final arrays (no copy per level).
+// Large nodes also sweep their three axes, and filter their three event
+// lists, in parallel.
 #include <algorithm>
 #include <array>
 #include <atomic>
 #include <bit>
+#include <memory>
 #include <string>
 #include <utility>
 
 #include <tbb/parallel_invoke.h>
+#include <tbb/task_group.h>
 
+#include "core/huge_pages.h"
 #include "core/phase_progress.h"
 #include "kdtree.h"
 #include "kdtree_build_support.h"
@@ -80,7 +86,7 @@ void addEvents(const Bounds3& b, uint32_t index, EventLists& events) {
 // Sorts events by position and kind (the high 34 bits; the index order of
 // equal keys does not matter): three passes of an LSD radix sort.
 void radixSort(std::vector<Event>& events, std::vector<Event>& scratch) {
-  scratch.resize(events.size());
+  resizeOnHugePages(scratch, events.size());
   constexpr std::array<uint32_t, 3> kShift{30, 41, 52}, kBits{11, 11, 12};
   std::vector<uint32_t> count;
   for (size_t pass = 0; pass < 3; ++pass) {
@@ -119,6 +125,7 @@ struct Shared {
   uint32_t triangleCount;
   const PhaseSink* sink;  // the calling thread's progress sink (thread-safe), or null
   std::atomic<size_t> nodes{0};
+  std::vector<float> binFractions;  // b / bins for b = 0..bins (the binned build's bin boundaries, no division)
 };
 
 // Nodes with at least this many primitives build their subtrees in parallel.
@@ -172,21 +179,80 @@ class Builder {
     const int nextSplits = splits + (belowEmpty || aboveEmpty ? 0 : 1);
 
     if (n >= kParallelPrimitives && !belowEmpty && !aboveEmpty) {
-      Builder below(sh_), above(sh_);
-      std::swap(below.input(depth + 1), children[0]);
-      std::swap(above.input(depth + 1), children[1]);
+      auto below = std::make_unique<Builder>(sh_), above = std::make_unique<Builder>(sh_);
+      std::swap(below->input(depth + 1), children[0]);
+      std::swap(above->input(depth + 1), children[1]);
       tbb::parallel_invoke(
-          [&] { below.build(below.input(depth + 1), cellBelow, depth + 1, nextSplits, badRefines); },
-          [&] { above.build(above.input(depth + 1), cellAbove, depth + 1, nextSplits, badRefines); });
-      splice(below);
-      nodes_[index] = KdNode::interior(a, plane.position, static_cast<uint32_t>(nodes_.size()), false, false);
-      splice(above);
+          [&] { below->build(below->input(depth + 1), cellBelow, depth + 1, nextSplits, badRefines); },
+          [&] { above->build(above->input(depth + 1), cellAbove, depth + 1, nextSplits, badRefines); });
+      // Each subtree stays where its builder made it; a link node marks where it goes.
+      nodes_[index] = KdNode::interior(a, plane.position, index + 2, false, false);
+      for (auto* sub : {&below, &above}) {
+        nodes_.push_back(KdNode::leafNode(static_cast<uint32_t>(subs_.size()), kLink));
+        (*sub)->scratch_.clear();  // its inputs are spent
+        subs_.push_back(std::move(*sub));
+      }
       return;
     }
     build(children[0], cellBelow, depth + 1, nextSplits, badRefines);
     nodes_[index] = KdNode::interior(a, plane.position, static_cast<uint32_t>(nodes_.size()), belowEmpty, aboveEmpty);
     build(children[1], cellAbove, depth + 1, nextSplits, badRefines);
   }
+
+  // The final layout, written once: this builder's nodes in order with each
+  // link replaced by its subtree (depth first, as a serial build makes it),
+  // leaf slots in leaf order. Sizes first, so subtrees can be written in parallel.
+  void countTotals() {
+    totalNodes_ = nodes_.size() - subs_.size();
+    totalSlots_ = slots_.size();
+    for (auto& sub : subs_) {
+      sub->countTotals();
+      totalNodes_ += sub->totalNodes_;
+      totalSlots_ += sub->totalSlots_;
+      depth_ = std::max(depth_, sub->depth_);
+      sah_ += sub->sah_;
+    }
+  }
+
+  // Writes the subtree at nodes[nodeBase...] and slots[slotBase...]. Preconditions: countTotals() ran.
+  void emit(KdNode* nodes, uint32_t nodeBase, uint32_t* slots, uint32_t slotBase) const {
+    // Where each local node lands: links stand for their subtree's nodes.
+    std::vector<uint32_t> at(nodes_.size());
+    std::vector<std::pair<uint32_t, uint32_t>> subBase(subs_.size());  // a link's node and slot base
+    uint32_t node = nodeBase, slot = slotBase;
+    for (size_t i = 0; i < nodes_.size(); ++i) {
+      at[i] = node;
+      const KdNode& nd = nodes_[i];
+      if (nd.isLeaf() && nd.count() == kLink) {
+        const Builder& sub = *subs_[nd.first()];
+        subBase[nd.first()] = {node, slot};
+        node += static_cast<uint32_t>(sub.totalNodes_);
+        slot += static_cast<uint32_t>(sub.totalSlots_);
+      } else {
+        ++node;
+        if (nd.isLeaf()) slot += nd.count();
+      }
+    }
+    tbb::task_group subtrees;
+    for (size_t k = 0; k < subs_.size(); ++k)
+      subtrees.run([&, k] { subs_[k]->emit(nodes, subBase[k].first, slots, subBase[k].second); });
+    slot = slotBase;
+    for (size_t i = 0; i < nodes_.size(); ++i) {
+      const KdNode& nd = nodes_[i];
+      if (!nd.isLeaf()) {
+        nodes[at[i]] = KdNode::interior(nd.axis(), nd.split(), at[nd.aboveChild()], nd.belowEmpty(), nd.aboveEmpty());
+      } else if (nd.count() == kLink) {
+        slot += static_cast<uint32_t>(subs_[nd.first()]->totalSlots_);
+      } else {
+        nodes[at[i]] = KdNode::leafNode(slot, nd.count());
+        std::copy_n(slots_.begin() + nd.first(), nd.count(), slots + slot);
+        slot += nd.count();
+      }
+    }
+    subtrees.wait();
+  }
+
+  size_t totalNodes_ = 0, totalSlots_ = 0;  // countTotals(): the whole subtree's, links resolved
 
   std::vector<KdNode> nodes_;     // subtree in depth-first order; aboveChild indices within it
   std::vector<uint32_t> slots_;   // leaf slots; leaves' first slot within it
@@ -198,14 +264,32 @@ class Builder {
   // no primitive on one side, priced without the empty bonus (the true SAH
   // cost, to compare with a leaf's).
   Plane bestPlane(const NodeData& in, const Bounds3& cell, bool emptyOnly) const {
+    std::array<Plane, 3> best;
+    if (in.prims.size() >= kParallelPrimitives)
+      tbb::parallel_invoke([&] { best[0] = bestPlane(in, cell, emptyOnly, 0, kInfinity); },
+                           [&] { best[1] = bestPlane(in, cell, emptyOnly, 1, kInfinity); },
+                           [&] { best[2] = bestPlane(in, cell, emptyOnly, 2, kInfinity); });
+    else
+      for (int a = 0; a < 3; ++a)
+        best[static_cast<size_t>(a)] = bestPlane(in, cell, emptyOnly, a, a == 0 ? kInfinity : std::min(best[0].cost, best[1].cost));
+    // The cheapest; on a tie the lowest axis.
+    Plane cheapest;
+    for (const Plane& p : best)
+      if (p.cost < cheapest.cost) cheapest = p;
+    return cheapest;
+  }
+
+  // The cheapest candidate on axis a; one costing more than `beaten` (the best on other axes) may be
+  // missed (then a plane costing more is returned).
+  Plane bestPlane(const NodeData& in, const Bounds3& cell, bool emptyOnly, int a, float beaten) const {
     Plane best;
     const float emptySideFactor = emptyOnly ? 1.0f : 1.0f - s_.emptyBonus;
     const auto n = static_cast<uint32_t>(in.prims.size());
     const float invArea = 1.0f / halfArea(cell);
     const Vec3 extent = cell.max - cell.min;
-    for (int a = 0; a < 3; ++a) {
+    {
       const float lo = cell.min[a], hi = cell.max[a];
-      if (!(hi > lo)) continue;
+      if (!(hi > lo)) return best;
       // The cell's half area is e1 e2 + length (e1 + e2) for the other axes' extents e1, e2.
       const float e1 = extent[(a + 1) % 3], e2 = extent[(a + 2) % 3];
       const float cap = e1 * e2, rim = e1 + e2;
@@ -228,11 +312,20 @@ class Builder {
       // Cornell box's walls all lie in its faces: the middle of the box separates them).
       const int bins = std::clamp(s_.bins, 2, 64);
       const float binsPerLength = static_cast<float>(bins) / (hi - lo);
-      const auto boundary = [&](int b) { return lo + (hi - lo) * (static_cast<float>(b) / static_cast<float>(bins)); };
+      const float* fraction = sh_.binFractions.data();  // b / bins
+      const auto boundary = [&](int b) { return lo + (hi - lo) * fraction[b]; };
       const auto considerGap = [&](float from, float to) {
         from = std::max(from, lo);
         to = std::min(to, hi);
-        if (!(from < to)) return;
+        if (!(from < to) || (emptyOnly && nBelow != 0 && nAbove != 0)) return;
+        // Most gaps cannot win: the cost is linear across a gap, so the cheaper of its ends (priced with
+        // the gap's counts) bounds every plane inside. The slack covers rounding.
+        const float oneSidedFactor = nBelow == 0 || nAbove == 0 ? emptySideFactor : 1.0f;
+        const float nB = static_cast<float>(nBelow), nA = static_cast<float>(nAbove);
+        const float atFrom = cap * (nB + nA) + rim * ((from - lo) * nB + (hi - from) * nA);
+        const float atTo = cap * (nB + nA) + rim * ((to - lo) * nB + (hi - to) * nA);
+        const float floor = s_.traversalCost + oneSidedFactor * s_.intersectionCost * invArea * std::min(atFrom, atTo);
+        if (floor > 1.0001f * std::min(best.cost, beaten)) return;
         int first = binIndex((from - lo) * binsPerLength, bins) + 1;
         while (first > 1 && boundary(first - 1) > from) --first;
         while (first < bins && !(boundary(first) > from)) ++first;
@@ -279,8 +372,7 @@ class Builder {
     below.clear();
     above.clear();
     const size_t n = in.prims.size();
-    side_.resize(n);
-    newIndex_.resize(n);
+    dest_.resize(n);
     for (auto& side : straddlers_)
       for (auto& list : side) list.clear();
     for (size_t i = 0; i < n; ++i) {
@@ -289,7 +381,7 @@ class Builder {
       const bool toBelow = p.box.min[a] < position || (inPlane && planarBelow);
       const bool toAbove = p.box.max[a] > position || (inPlane && !planarBelow);
       if (toBelow && toAbove) {
-        side_[i] = 2;
+        dest_[i] = kStraddles;
         Bounds3 b = p.box, t = p.box;
         if (p.prim < sh_.triangleCount) {
           const LeafTriangle& tri = sh_.triangles[p.prim];
@@ -303,21 +395,29 @@ class Builder {
         if (!t.empty()) addStraddler(above, {t, p.prim}, straddlers_[1]);
       } else {
         NodeData& to = toBelow ? below : above;
-        side_[i] = toBelow ? 0 : 1;
-        newIndex_[i] = static_cast<uint32_t>(to.prims.size());
+        dest_[i] = static_cast<uint32_t>(to.prims.size()) | (toBelow ? 0u : kAbove);
         to.prims.push_back(p);
       }
     }
-    // Events of one-sided boxes keep their order (indices renumbered in order); the straddlers' are merged in.
-    for (size_t k = 0; k < 3; ++k) {
+    // Events of one-sided boxes keep their order (indices renumbered in order); the straddlers' are merged
+    // in. The three axes are independent: a big node filters them in parallel.
+    const auto filterAxis = [&](size_t k) {
+      std::vector<Event>& to0 = below.events[k];
+      std::vector<Event>& to1 = above.events[k];
+      reserveOnHugePages(to0, 2 * below.prims.size());
+      reserveOnHugePages(to1, 2 * above.prims.size());
       for (const Event e : in.events[k]) {
-        const uint32_t i = indexOf(e);
-        if (side_[i] == 2) continue;
-        (side_[i] == 0 ? below : above).events[k].push_back(withIndex(e, newIndex_[i]));
+        const uint32_t d = dest_[indexOf(e)];
+        if (d == kStraddles) continue;
+        ((d & kAbove) == 0 ? to0 : to1).push_back(withIndex(e, d & kIndexMask));
       }
-      mergeStraddlers(below.events[k], straddlers_[0][k]);
-      mergeStraddlers(above.events[k], straddlers_[1][k]);
-    }
+      mergeStraddlers(to0, straddlers_[0][k], merged_[k]);
+      mergeStraddlers(to1, straddlers_[1][k], merged_[k]);
+    };
+    if (n >= kParallelPrimitives)
+      tbb::parallel_invoke([&] { filterAxis(0); }, [&] { filterAxis(1); }, [&] { filterAxis(2); });
+    else
+      for (size_t k = 0; k < 3; ++k) filterAxis(k);
   }
 
   static void addStraddler(NodeData& to, const KdPrim& p, EventLists& events) {
@@ -325,12 +425,12 @@ class Builder {
     to.prims.push_back(p);
   }
 
-  void mergeStraddlers(std::vector<Event>& events, std::vector<Event>& added) {
+  static void mergeStraddlers(std::vector<Event>& events, std::vector<Event>& added, std::vector<Event>& merged) {
     if (added.empty()) return;
     std::sort(added.begin(), added.end());
-    merged_.resize(events.size() + added.size());
-    std::merge(events.begin(), events.end(), added.begin(), added.end(), merged_.begin());
-    events.swap(merged_);
+    merged.resize(events.size() + added.size());
+    std::merge(events.begin(), events.end(), added.begin(), added.end(), merged.begin());
+    events.swap(merged);
   }
 
   void makeLeaf(uint32_t index, const std::vector<KdPrim>& prims, double area) {
@@ -339,39 +439,30 @@ class Builder {
     sah_ += static_cast<double>(s_.intersectionCost) * static_cast<double>(prims.size()) * area;
   }
 
-  // Appends a subtree built by another builder, its indices moved to where it lands.
-  void splice(const Builder& sub) {
-    const auto nodeOffset = static_cast<uint32_t>(nodes_.size()), slotOffset = static_cast<uint32_t>(slots_.size());
-    for (const KdNode& node : sub.nodes_) {
-      if (node.isLeaf())
-        nodes_.push_back(KdNode::leafNode(node.first() + slotOffset, node.count()));
-      else
-        nodes_.push_back(KdNode::interior(node.axis(), node.split(), node.aboveChild() + nodeOffset, node.belowEmpty(),
-                                          node.aboveEmpty()));
-    }
-    slots_.insert(slots_.end(), sub.slots_.begin(), sub.slots_.end());
-    depth_ = std::max(depth_, sub.depth_);
-    sah_ += sub.sah_;
-  }
-
   Shared& sh_;
   const KdSettings& s_;
   std::vector<std::array<NodeData, 2>> scratch_;  // by depth: the two children made there (reused)
-  std::vector<uint8_t> side_;                      // split(): 0 below, 1 above, 2 both
-  std::vector<uint32_t> newIndex_;                 // split(): index in the child of a one-sided box
-  std::array<EventLists, 2> straddlers_;           // split(): new events of clipped boxes, below and above
-  std::vector<Event> merged_;
+  // split(): where each primitive goes: its index in the child, kAbove set for the child above; or kStraddles.
+  std::vector<uint32_t> dest_;
+  static constexpr uint32_t kAbove = 1u << 31, kStraddles = ~0u;
+  std::array<EventLists, 2> straddlers_;  // split(): new events of clipped boxes, below and above
+  EventLists merged_;                     // split(): scratch of the merges, by axis
   size_t unreported_ = 0;  // nodes made since the last report
+  std::vector<std::unique_ptr<Builder>> subs_;  // subtrees built apart; a link node (count kLink) names one
+  // A leaf count no leaf has (most primitives < 2^30): marks a link node, its first() the index in subs_.
+  static constexpr uint32_t kLink = (1u << 30) - 1u;
 };
 
 }  // namespace
 
 BuildTotals buildSweep(KdTree& tree, std::vector<KdPrim> prims, const KdSettings& s, int maxDepth, float pad) {
-  Shared shared{s, maxDepth, pad, tree.triangles, tree.triangleCount, currentPhaseSink()};
+  Shared shared{s, maxDepth, pad, tree.triangles, tree.triangleCount, currentPhaseSink(), {}, {}};
+  const int bins = std::clamp(s.bins, 2, 64);
+  for (int b = 0; b <= bins; ++b) shared.binFractions.push_back(static_cast<float>(b) / static_cast<float>(bins));
   Builder builder(shared);
   NodeData& root = builder.input(0);
   const auto n = static_cast<uint32_t>(prims.size());
-  for (auto& list : root.events) list.reserve(2 * size_t{n});
+  for (auto& list : root.events) reserveOnHugePages(list, 2 * size_t{n});
   for (uint32_t i = 0; i < n; ++i) addEvents(prims[i].box, i, root.events);
   root.prims = std::move(prims);
   {
@@ -381,8 +472,12 @@ BuildTotals buildSweep(KdTree& tree, std::vector<KdPrim> prims, const KdSettings
                          [&] { radixSort(root.events[2], scratch[2]); });
   }
   builder.build(root, tree.bounds, 0, 0, 0);
-  tree.nodes = std::move(builder.nodes_);
-  tree.primIds = std::move(builder.slots_);
+  builder.countTotals();
+  tree.nodes.clear();  // exact sizes: no copy to shrink them after
+  tree.primIds.clear();
+  resizeOnHugePages(tree.nodes, builder.totalNodes_);
+  resizeOnHugePages(tree.primIds, builder.totalSlots_);
+  builder.emit(tree.nodes.data(), 0, tree.primIds.data(), 0);
   return {builder.depth_, builder.sah_};
 }
 

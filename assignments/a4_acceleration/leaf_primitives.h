@@ -12,6 +12,10 @@
 #include <cstdint>
 #include <vector>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "core/huge_pages.h"
 #include "core/math.h"
 #include "scene/geometry.h"
 
@@ -38,11 +42,13 @@ struct LeafPrimitives {
   // primitive id (`geometry` must be set); slots are then appended as ids.
   void storeTrianglesByPrimitive() {
     byPrimitive = true;
-    triangles.resize(triangleCount);
-    for (uint32_t prim = 0; prim < triangleCount; ++prim) {
-      const glm::uvec3& t = geometry->triangles[prim];
-      triangles[prim] = {geometry->positions[t.x], geometry->positions[t.y], geometry->positions[t.z]};
-    }
+    resizeOnHugePages(triangles, triangleCount);
+    tbb::parallel_for(tbb::blocked_range<uint32_t>(0, triangleCount, 16384), [&](const tbb::blocked_range<uint32_t>& r) {
+      for (uint32_t prim = r.begin(); prim < r.end(); ++prim) {
+        const glm::uvec3& t = geometry->triangles[prim];
+        triangles[prim] = {geometry->positions[t.x], geometry->positions[t.y], geometry->positions[t.z]};
+      }
+    });
   }
 
   size_t memoryBytes() const {
