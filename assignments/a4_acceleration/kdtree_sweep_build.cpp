@@ -189,7 +189,7 @@ class Builder {
       nodes_[index] = KdNode::interior(a, plane.position, index + 2, false, false);
       for (auto* sub : {&below, &above}) {
         nodes_.push_back(KdNode::leafNode(static_cast<uint32_t>(subs_.size()), kLink));
-        (*sub)->scratch_.clear();  // its inputs are spent
+        (*sub)->releaseScratch();  // it lives on until the tree is written: keep only its nodes and slots
         subs_.push_back(std::move(*sub));
       }
       return;
@@ -214,8 +214,9 @@ class Builder {
     }
   }
 
-  // Writes the subtree at nodes[nodeBase...] and slots[slotBase...]. Preconditions: countTotals() ran.
-  void emit(KdNode* nodes, uint32_t nodeBase, uint32_t* slots, uint32_t slotBase) const {
+  // Writes the subtree at nodes[nodeBase...] and slots[slotBase...], freeing this builder's copy as it
+  // goes (the tree is not held twice). Preconditions: countTotals() ran.
+  void emit(KdNode* nodes, uint32_t nodeBase, uint32_t* slots, uint32_t slotBase) {
     // Where each local node lands: links stand for their subtree's nodes.
     std::vector<uint32_t> at(nodes_.size());
     std::vector<std::pair<uint32_t, uint32_t>> subBase(subs_.size());  // a link's node and slot base
@@ -249,6 +250,8 @@ class Builder {
         slot += nd.count();
       }
     }
+    nodes_ = {};
+    slots_ = {};
     subtrees.wait();
   }
 
@@ -423,6 +426,13 @@ class Builder {
   static void addStraddler(NodeData& to, const KdPrim& p, EventLists& events) {
     addEvents(p.box, static_cast<uint32_t>(to.prims.size()), events);
     to.prims.push_back(p);
+  }
+
+  void releaseScratch() {
+    scratch_ = {};
+    dest_ = {};
+    straddlers_ = {};
+    merged_ = {};
   }
 
   static void mergeStraddlers(std::vector<Event>& events, std::vector<Event>& added, std::vector<Event>& merged) {
