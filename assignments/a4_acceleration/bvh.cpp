@@ -16,6 +16,7 @@
 #include <tbb/parallel_invoke.h>
 
 #include "a4_tasks.h"
+#include "core/huge_pages.h"
 #include "render/student_task.h"
 
 namespace ll::a4 {
@@ -45,7 +46,9 @@ constexpr int kForcedHalvingDepth = kBvhMaxDepth - 40;
 class NodePool {
  public:
   explicit NodePool(size_t primitives)
-      : capacity_(2 * primitives), bytes_(std::make_unique_for_overwrite<std::byte[]>(capacity_ * sizeof(BuildNode))) {}
+      : capacity_(2 * primitives), bytes_(std::make_unique_for_overwrite<std::byte[]>(capacity_ * sizeof(BuildNode))) {
+    adviseHugePages(bytes_.get(), capacity_ * sizeof(BuildNode));
+  }
   // A node over primitives [first, first + count) with box `bounds`, no children yet.
   // Precondition: slot < 2n - 1, and each slot is made once.
   BuildNode* make(size_t slot, const Bounds3& bounds, size_t first, size_t count) {
@@ -169,7 +172,8 @@ FlatBvh buildBvh(const Geometry& geometry, const SplitSettings& settings, Boundi
   int depth = 0;
   TaskLog buildLog;  // catches the A4.1 stub during the build
   if (n > 0) {
-    std::vector<BuildPrim> prims(n);
+    std::vector<BuildPrim> prims;
+    resizeOnHugePages(prims, n);
     tbb::parallel_for(uint32_t{0}, n, [&](uint32_t p) {
       prims[p].bounds = geometry.bounds(p);
       prims[p].centroid = prims[p].bounds.center();
@@ -181,12 +185,12 @@ FlatBvh buildBvh(const Geometry& geometry, const SplitSettings& settings, Boundi
       const ScopedTaskLog scope(&buildLog);
       root = buildNode(pool, prims, 0, n, settings, 0);
     }
-    bvh.nodes.reserve(root->subtreeNodes);  // exactly: no regrowth, no shrinking copy
+    reserveOnHugePages(bvh.nodes, root->subtreeNodes);  // exactly: no regrowth, no shrinking copy
     flatten(*root, bvh.nodes, 0, depth);
     bvh.sceneCentre = root->bounds.center();
     bvh.sceneRadius = 0.5f * root->bounds.diagonal();
-    bvh.primIds.resize(n);
-    bvh.triangles.resize(n);
+    resizeOnHugePages(bvh.primIds, n);
+    resizeOnHugePages(bvh.triangles, n);
     tbb::parallel_for(tbb::blocked_range<uint32_t>(0, n, 4096), [&](const tbb::blocked_range<uint32_t>& range) {
       for (uint32_t s = range.begin(); s < range.end(); ++s) {
         const uint32_t prim = prims[s].prim;

@@ -17,6 +17,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_group.h>
 
+#include "core/huge_pages.h"
 #include "core/timer.h"
 
 namespace ll {
@@ -132,7 +133,9 @@ struct Range {
 class Builder {
  public:
   Builder(PrimRef* prims, uint32_t n, const WideBvhSettings& s)
-      : prims_(prims), settings_(s), nodes_(std::make_unique_for_overwrite<WideBvhNode[]>(std::max(n, 1u))) {}
+      : prims_(prims), settings_(s), nodes_(std::make_unique_for_overwrite<WideBvhNode[]>(std::max(n, 1u))) {
+    adviseHugePages(nodes_.get(), std::max(n, 1u) * sizeof(WideBvhNode));
+  }
 
   // The range [begin, end) with its bounds computed, depth `depth`, planned.
   Range makeRange(uint32_t begin, uint32_t end, int depth) const {
@@ -719,6 +722,7 @@ WideBvh buildWideBvh(const Geometry& geometry, const WideBvhSettings& settings) 
   const uint32_t n = geometry.primitiveCount();
   if (n == 0) return bvh;
   auto prims = std::make_unique_for_overwrite<PrimRef[]>(n);
+  adviseHugePages(prims.get(), n * sizeof(PrimRef));
   tbb::parallel_for(tbb::blocked_range<uint32_t>(0, n, 4096), [&](const tbb::blocked_range<uint32_t>& range) {
     for (uint32_t p = range.begin(); p < range.end(); ++p) prims[p] = PrimRef(geometry.bounds(p), p);
   });
@@ -729,8 +733,8 @@ WideBvh buildWideBvh(const Geometry& geometry, const WideBvhSettings& settings) 
   const Bounds3 sceneBox = root.bounds.bounds3();
   bvh.sceneCentre = sceneBox.center();
   bvh.sceneRadius = 0.5f * sceneBox.diagonal();
-  bvh.nodes.reserve(builder.nodeCount());  // exactly: flatten() never reallocates
-  bvh.packets.reserve(n);                   // at most one packet per primitive
+  reserveOnHugePages(bvh.nodes, builder.nodeCount());  // exactly: flatten() never reallocates
+  reserveOnHugePages(bvh.packets, n);                   // at most one packet per primitive
   flatten(builder.nodes(), rootIndex, 0, sceneBox.halfSurfaceArea(), prims.get(), geometry, bvh);
   bvh.packets.shrink_to_fit();
   if (!(sceneBox.halfSurfaceArea() > 0.0f)) bvh.sahCost = static_cast<double>(n);

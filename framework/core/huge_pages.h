@@ -27,10 +27,10 @@ inline void adviseHugePages([[maybe_unused]] void* data, [[maybe_unused]] size_t
 }
 
 // v.resize(n) (value-initialized), v's new storage advised first when it is at least a few huge pages.
-template <class T>
-void resizeOnHugePages(std::vector<T>& v, size_t n) {
+template <class T, class A>
+void resizeOnHugePages(std::vector<T, A>& v, size_t n) {
   if (n > v.capacity() && n * sizeof(T) >= (size_t{4} << 20)) {
-    std::vector<T> grown;
+    std::vector<T, A> grown;
     grown.reserve(n);
     adviseHugePages(grown.data(), n * sizeof(T));
     grown.assign(v.begin(), v.end());
@@ -40,10 +40,10 @@ void resizeOnHugePages(std::vector<T>& v, size_t n) {
 }
 
 // v.reserve(n), the new storage advised first.
-template <class T>
-void reserveOnHugePages(std::vector<T>& v, size_t n) {
+template <class T, class A>
+void reserveOnHugePages(std::vector<T, A>& v, size_t n) {
   if (n <= v.capacity()) return;
-  std::vector<T> grown;
+  std::vector<T, A> grown;
   grown.reserve(n);
   if (n * sizeof(T) >= (size_t{4} << 20)) adviseHugePages(grown.data(), n * sizeof(T));
   grown.assign(v.begin(), v.end());
