@@ -48,7 +48,6 @@ KdTree buildKdTree(const Geometry& geometry, const KdSettings& settings, KdBuild
     tree.sceneCentre = tree.bounds.center();
     tree.sceneRadius = 0.5f * tree.bounds.diagonal();
     const int maxDepth = kdbuild::maxSplits(settings.maxDepth, n, kKdMaxDepth);
-    if (settings.build == KdBuild::Binned) tree.primIds.reserve(2 * static_cast<size_t>(n));  // the sweep sizes it
     tree.storeTrianglesByPrimitive();
     const float pad = kdbuild::roundingPad(tree.bounds);
     const kdbuild::BuildTotals totals =

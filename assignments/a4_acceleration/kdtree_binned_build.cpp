@@ -190,6 +190,7 @@ class Builder {
 }  // namespace
 
 BuildTotals buildBinned(KdTree& tree, std::vector<KdPrim> prims, const KdSettings& s, int maxDepth, float pad) {
+  tree.primIds.reserve(2 * prims.size());  // leaves append their slots (straddlers repeat)
   Builder builder(tree, s, maxDepth, pad);
   builder.build(prims, tree.bounds, 0, 0, 0);
   return {builder.depth(), builder.sahSum()};

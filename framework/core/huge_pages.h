@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <iterator>
 #include <vector>
 
 #if defined(__linux__)
@@ -27,28 +28,25 @@ inline void adviseHugePages([[maybe_unused]] void* data, [[maybe_unused]] size_t
 #endif
 }
 
-// v.resize(n) (value-initialized), v's new storage advised first when it is at least a few huge pages.
-template <class T, class A>
-void resizeOnHugePages(std::vector<T, A>& v, size_t n) {
-  if (n > v.capacity() && n * sizeof(T) >= (size_t{4} << 20)) {
-    std::vector<T, A> grown;
-    grown.reserve(n);
-    adviseHugePages(grown.data(), n * sizeof(T));
-    grown.assign(v.begin(), v.end());
-    v.swap(grown);
-  }
-  v.resize(n);
-}
+// Buffers below this size are left on small pages (memory is taken in 2 MiB steps).
+constexpr size_t kHugePagesWorthIt = size_t{4} << 20;
 
-// v.reserve(n), the new storage advised first.
+// v.reserve(n), the new storage advised first when it is big enough.
 template <class T, class A>
 void reserveOnHugePages(std::vector<T, A>& v, size_t n) {
   if (n <= v.capacity()) return;
   std::vector<T, A> grown;
   grown.reserve(n);
-  if (n * sizeof(T) >= (size_t{4} << 20)) adviseHugePages(grown.data(), n * sizeof(T));
-  grown.assign(v.begin(), v.end());
+  if (n * sizeof(T) >= kHugePagesWorthIt) adviseHugePages(grown.data(), n * sizeof(T));
+  grown.assign(std::make_move_iterator(v.begin()), std::make_move_iterator(v.end()));
   v.swap(grown);
+}
+
+// v.resize(n), the new storage advised before resize() first touches it.
+template <class T, class A>
+void resizeOnHugePages(std::vector<T, A>& v, size_t n) {
+  reserveOnHugePages(v, n);
+  v.resize(n);
 }
 
 }  // namespace ll
