@@ -1,16 +1,33 @@
-// The binned KD-tree build (framework code), the first one LightLab had and
-// kept as the sweep build's yardstick (`-a kdtree --set build=binned`):
-// top-down, one axis-aligned plane per node chosen by the surface area
-// heuristic among the bin boundaries of each axis of the node's cell, plus
-// the faces of the primitives' box. O(n) per node, so O(n log n) for the
-// tree, but every node bins, partitions and clips from scratch.
+// The binned KD-tree build (framework code; `-a kdtree --set build=binned`),
+// the first one LightLab had: top-down, one axis-aligned plane per node,
+// chosen by the surface area heuristic among the bin boundaries of each axis
+// of the node's cell plus the faces of the primitives' box. O(n) per node
+// (one pass counts where every box starts and ends, then O(bins) prices the
+// candidates), so O(n log n) for the tree; every node partitions and clips
+// from scratch, with no sorted lists to keep. Shevtsov, Soupikov and
+// Kapustin, "Highly parallel fast KD-tree construction for interactive ray
+// tracing of dynamic scenes", Eurographics 2007, count bins the same way.
+//
+// Fast where it pays: big nodes count their bins in parallel and build their
+// two subtrees in parallel (oneTBB), each into its own Subtree, written out
+// once at the end; every builder reuses its buffers, one pair per depth.
+// The trees are the same on any number of threads, and the same as the
+// first, serial version made.
 #include <algorithm>
 #include <array>
+#include <atomic>
+#include <memory>
 #include <string>
+#include <utility>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_invoke.h>
+#include <tbb/parallel_reduce.h>
 
 #include "core/phase_progress.h"
 #include "kdtree.h"
 #include "kdtree_build_support.h"
+#include "kdtree_subtree.h"
 
 namespace ll::a4::kdbuild {
 
@@ -24,28 +41,71 @@ struct Plane {
 
 constexpr int kMaxBins = 64;
 
+// Where a node's boxes start and end, per axis: bin counts and the faces of their box.
+struct BinCounts {
+  std::array<std::array<uint32_t, kMaxBins>, 3> starts, ends;  // [axis][bin]; bins beyond `bins` unset
+  Vec3 first{kInfinity}, last{-kInfinity};                     // per axis: lowest min and highest max face
+
+  explicit BinCounts(int bins) {  // zeroes only the bins in use: most nodes are small
+    for (size_t a = 0; a < 3; ++a) {
+      std::fill_n(starts[a].begin(), bins, 0u);
+      std::fill_n(ends[a].begin(), bins, 0u);
+    }
+  }
+
+  void add(const BinCounts& o, int bins) {
+    for (size_t a = 0; a < 3; ++a)
+      for (size_t b = 0; b < static_cast<size_t>(bins); ++b) {
+        starts[a][b] += o.starts[a][b];
+        ends[a][b] += o.ends[a][b];
+      }
+    first = glm::min(first, o.first);
+    last = glm::max(last, o.last);
+  }
+};
+
+// Shared by the builders of one tree (the parallel subtrees'), read-only but the counter.
+struct Shared {
+  const KdSettings& settings;
+  int bins;
+  int maxDepth;
+  float pad;
+  const std::vector<LeafTriangle>& triangles;  // by primitive id
+  uint32_t triangleCount;
+  const PhaseSink* sink;  // the calling thread's progress sink (thread-safe), or null
+  std::atomic<size_t> nodes{0};
+  std::array<float, kMaxBins + 1> binFractions{};  // b / bins for b = 0 .. bins (no division per candidate)
+};
+
+// Nodes with at least this many primitives count their bins, and build their subtrees, in parallel.
+constexpr size_t kParallelPrimitives = 8192;
+
 class Builder {
  public:
-  // pad: world-space margin (>= rounding of the clipping) around clipped triangle boxes.
-  Builder(KdTree& tree, const KdSettings& s, int maxDepth, float pad)
-      : tree_(tree), s_(s), maxDepth_(maxDepth), pad_(pad) {}
+  explicit Builder(Shared& shared) : sh_(shared), s_(shared.settings), scratch_(kKdMaxDepth + 2) {}
 
-  // Appends the subtree of the cell `cell` holding `prims` (consumed) at the
-  // end of tree_.nodes. depth: edges from the root; splits: of those, the
-  // ones that left primitives on both sides (cutting off empty space does
-  // not count against maxDepth, or a small object in a big scene would run
-  // out of depth before its primitives are separated).
+  // The input of a subtree's root at `depth`, to fill before build().
+  std::vector<KdPrim>& input(int depth) { return scratch_[static_cast<size_t>(depth)][0]; }
+
+  // Builds the subtree of the cell `cell` holding `prims` (boxes clipped to
+  // it) into tree(). depth: edges from the root; splits: of those, the ones
+  // that left primitives on both sides (cutting off empty space does not
+  // count against maxDepth, or a small object in a big scene would run out
+  // of depth before its primitives are separated).
   void build(std::vector<KdPrim>& prims, const Bounds3& cell, int depth, int splits, int badRefines) {
-    const auto index = static_cast<uint32_t>(tree_.nodes.size());
-    tree_.nodes.emplace_back();
-    // Seconds on a big mesh (3.5 s for 235k triangles): say so every 1024 nodes and at every big node,
-    // which is also where a GUI pane's newer request cancels the build (its phase report throws).
-    if ((index & 0x3FF) == 0 || prims.size() > 20000)
-      reportPhase("kd-tree build (" + std::to_string(index) + " nodes)");
-    depth_ = std::max(depth_, depth);
+    const uint32_t index = out_->addNode();
+    // Nodes made by every builder, counted in batches; reported, which is also where a GUI pane's newer
+    // request cancels the build (its phase report throws).
+    if ((++unreported_ & 0x3FFF) == 0 || prims.size() > 50000) {
+      const size_t made = sh_.nodes.fetch_add(unreported_, std::memory_order_relaxed) + unreported_;
+      unreported_ = 0;
+      if (sh_.sink) (*sh_.sink)("kd-tree build (" + std::to_string(made) + " nodes)", -1.0);
+    }
+    const size_t made = sh_.nodes.load(std::memory_order_relaxed) + out_->nodeCount();
+    out_->depth = std::max(out_->depth, depth);
     const size_t n = prims.size();
     const double area = halfArea(cell);
-    if (n == 0 || splits >= maxDepth_ || depth >= kKdMaxDepth || tree_.nodes.size() + 2 > kKdMaxNodes)
+    if (n == 0 || splits >= sh_.maxDepth || depth >= kKdMaxDepth || made + 2 > kKdMaxNodes)
       return makeLeaf(index, prims, area);
     // A node with few primitives is a leaf unless a plane with nothing on one
     // side lowers its SAH cost: so a wall lying in the cell's face gets a
@@ -57,22 +117,47 @@ class Builder {
     if (plane.cost >= leafCost) ++badRefines;  // PBRT: a few uphill splits out of local minima; none below 16 primitives
     if ((plane.cost >= leafCost && n < 16) || badRefines >= 3) return makeLeaf(index, prims, area);
 
-    // Partition: below if the box starts below the plane, above if it ends
-    // above it; a box lying in the plane (planar primitive) goes above. So
-    // every primitive goes somewhere, and a hit point on the plane is in a
-    // cell holding its primitive.
     const int a = plane.axis;
-    const float split = plane.position;
     Bounds3 cellBelow = cell, cellAbove = cell;
-    cellBelow.max[a] = split;
-    cellAbove.min[a] = split;
-    std::vector<KdPrim> below, above;
-    below.reserve(n);
-    above.reserve(n);
+    cellBelow.max[a] = plane.position;
+    cellAbove.min[a] = plane.position;
+    auto& children = scratch_[static_cast<size_t>(depth + 1)];
+    partition(prims, a, plane.position, cellBelow, cellAbove, children[0], children[1]);
+    if (n >= kParallelPrimitives) std::vector<KdPrim>().swap(prims);  // not worth keeping for reuse
+    out_->sah += static_cast<double>(s_.traversalCost) * area;
+    const bool belowEmpty = children[0].empty(), aboveEmpty = children[1].empty();
+    const int nextSplits = splits + (belowEmpty || aboveEmpty ? 0 : 1);
+
+    if (n >= kParallelPrimitives && !belowEmpty && !aboveEmpty) {
+      auto below = std::make_unique<Builder>(sh_), above = std::make_unique<Builder>(sh_);
+      std::swap(below->input(depth + 1), children[0]);
+      std::swap(above->input(depth + 1), children[1]);
+      tbb::parallel_invoke(
+          [&] { below->build(below->input(depth + 1), cellBelow, depth + 1, nextSplits, badRefines); },
+          [&] { above->build(above->input(depth + 1), cellAbove, depth + 1, nextSplits, badRefines); });
+      out_->setInteriorOfSubtrees(index, a, plane.position, below->takeTree(), above->takeTree());
+      return;
+    }
+    build(children[0], cellBelow, depth + 1, nextSplits, badRefines);
+    out_->setInterior(index, a, plane.position, belowEmpty, aboveEmpty);
+    build(children[1], cellAbove, depth + 1, nextSplits, badRefines);
+  }
+
+  std::unique_ptr<Subtree> takeTree() { return std::move(out_); }
+
+ private:
+  // Partition: below if the box starts below the plane, above if it ends
+  // above it; a box lying in the plane (planar primitive) goes above. So
+  // every primitive goes somewhere, and a hit point on the plane is in a
+  // cell holding its primitive. A straddling triangle is clipped to each cell.
+  void partition(const std::vector<KdPrim>& prims, int a, float split, const Bounds3& cellBelow,
+                 const Bounds3& cellAbove, std::vector<KdPrim>& below, std::vector<KdPrim>& above) const {
+    below.clear();
+    above.clear();
     for (const KdPrim& p : prims) {
       const bool toBelow = p.box.min[a] < split;
       const bool toAbove = p.box.max[a] > split || (p.box.min[a] == split && p.box.max[a] == split);
-      if (toBelow && toAbove && p.prim < tree_.triangleCount) {  // a straddling triangle: clip it
+      if (toBelow && toAbove && p.prim < sh_.triangleCount) {
         clipInto(p, cellBelow, below);
         clipInto(p, cellAbove, above);
         continue;
@@ -88,84 +173,96 @@ class Builder {
         above.push_back(q);
       }
     }
-    std::vector<KdPrim>().swap(prims);  // free before recursing
-    sah_ += static_cast<double>(s_.traversalCost) * area;
-    const bool belowEmpty = below.empty(), aboveEmpty = above.empty();
-    const int nextSplits = splits + (belowEmpty || aboveEmpty ? 0 : 1);
-    build(below, cellBelow, depth + 1, nextSplits, badRefines);
-    const auto aboveIndex = static_cast<uint32_t>(tree_.nodes.size());
-    tree_.nodes[index] = KdNode::interior(a, split, aboveIndex, belowEmpty, aboveEmpty);
-    build(above, cellAbove, depth + 1, nextSplits, badRefines);
   }
 
-  int depth() const { return depth_; }
-  double sahSum() const { return sah_; }  // sum of cost * half area (divide by the root's)
-
- private:
   // Adds triangle p to `out` with its box shrunk to the part inside `cell`
-  // (padded by pad_, within p's box and the cell); not at all if the
-  // triangle stays more than pad_ away from the cell.
+  // (padded by pad, within p's box and the cell); not at all if the
+  // triangle stays more than pad away from the cell.
   void clipInto(const KdPrim& p, const Bounds3& cell, std::vector<KdPrim>& out) const {
-    const LeafTriangle& t = tree_.triangles[p.prim];
-    const Bounds3 b = clippedBox(p, t.p0, t.p1, t.p2, cell, pad_);
+    const LeafTriangle& t = sh_.triangles[p.prim];
+    const Bounds3 b = clippedBox(p, t.p0, t.p1, t.p2, cell, sh_.pad);
     if (!b.empty()) out.push_back({b, p.prim});
   }
 
   void makeLeaf(uint32_t index, const std::vector<KdPrim>& prims, double area) {
-    tree_.nodes[index] =
-        KdNode::leafNode(static_cast<uint32_t>(tree_.primIds.size()), static_cast<uint32_t>(prims.size()));
-    for (const KdPrim& p : prims) tree_.primIds.push_back(p.prim);
-    sah_ += static_cast<double>(s_.intersectionCost) * static_cast<double>(prims.size()) * area;
+    out_->setLeaf(index, prims);
+    out_->sah += static_cast<double>(s_.intersectionCost) * static_cast<double>(prims.size()) * area;
+  }
+
+  // Counts, in one pass, where the boxes of prims[begin, end) start and end:
+  // bin b of axis a spans [lo + b / scale, lo + (b + 1) / scale) (the last
+  // bin reaches on). Clamped as a float before the conversion: (x - lo) *
+  // scale is 0 * inf = NaN in a cell thinner than float resolution, and
+  // beyond int's range for far boxes (both undefined as an int).
+  void countBins(const KdPrim* prims, size_t count, const Vec3& lo, const Vec3& scale, BinCounts& c) const {
+    const float lastBin = static_cast<float>(sh_.bins - 1);
+    const auto binOf = [&](float x, int a) {
+      const float f = (x - lo[a]) * scale[a];
+      return f >= lastBin ? static_cast<size_t>(lastBin) : f > 0.0f ? static_cast<size_t>(f) : 0;
+    };
+    for (size_t i = 0; i < count; ++i) {
+      const Bounds3& box = prims[i].box;
+      for (int a = 0; a < 3; ++a) {
+        ++c.starts[static_cast<size_t>(a)][binOf(box.min[a], a)];
+        ++c.ends[static_cast<size_t>(a)][binOf(box.max[a], a)];
+      }
+      c.first = glm::min(c.first, box.min);
+      c.last = glm::max(c.last, box.max);
+    }
   }
 
   // The cheapest bin boundary over all three axes: counts of boxes starting
   // and ending in each bin give the primitives on each side in O(bins).
   // emptyOnly: only planes with no primitive on one side, and their cost
   // without the empty bonus (the true SAH cost, to compare with a leaf's).
+  // On a tie the first candidate wins: lower axis, then lower boundary, then the faces.
   Plane bestPlane(const std::vector<KdPrim>& prims, const Bounds3& cell, bool emptyOnly) const {
+    const int bins = sh_.bins;
+    Vec3 scale;
+    for (int a = 0; a < 3; ++a) scale[a] = static_cast<float>(bins) / (cell.max[a] - cell.min[a]);
+    BinCounts c(bins);
+    if (prims.size() >= kParallelPrimitives) {
+      c = tbb::parallel_reduce(
+          tbb::blocked_range<size_t>(0, prims.size(), 4096), BinCounts(bins),
+          [&](const tbb::blocked_range<size_t>& r, BinCounts part) {
+            countBins(prims.data() + r.begin(), r.size(), cell.min, scale, part);
+            return part;
+          },
+          [&](BinCounts x, const BinCounts& y) {
+            x.add(y, bins);
+            return x;
+          });
+    } else {
+      countBins(prims.data(), prims.size(), cell.min, scale, c);
+    }
+
     Plane best;
     const float emptySideFactor = emptyOnly ? 1.0f : 1.0f - s_.emptyBonus;  // cost factor of a one-sided plane
-    const int bins = std::clamp(s_.bins, 2, kMaxBins);
     const float n = static_cast<float>(prims.size());
     const float invArea = 1.0f / halfArea(cell);
+    const Vec3 extent = glm::max(cell.max - cell.min, Vec3(0.0f));
     for (int a = 0; a < 3; ++a) {
       const float lo = cell.min[a], hi = cell.max[a];
       if (!(hi > lo)) continue;
-      const float scale = static_cast<float>(bins) / (hi - lo);
-      std::array<uint32_t, kMaxBins> starts{}, ends{};
-      // Clamped as a float before the conversion: (x - lo) * scale is 0 * inf = NaN in a cell thinner than
-      // float resolution, and beyond int's range for far boxes (both undefined as an int).
-      auto binOf = [&](float x) {
-        const float f = (x - lo) * scale;
-        return f >= static_cast<float>(bins - 1) ? static_cast<size_t>(bins - 1) : f > 0.0f ? static_cast<size_t>(f) : 0;
-      };
-      for (const KdPrim& p : prims) {
-        ++starts[binOf(p.box.min[a])];
-        ++ends[binOf(p.box.max[a])];
-      }
-      uint32_t nBelow = 0, nEnded = 0;
-      for (int b = 1; b < bins; ++b) {
-        nBelow += starts[static_cast<size_t>(b - 1)];  // boxes starting below boundary b
-        nEnded += ends[static_cast<size_t>(b - 1)];    // boxes ending below boundary b
-        const float position = lo + (hi - lo) * (static_cast<float>(b) / static_cast<float>(bins));
-        if (!(position > lo && position < hi)) continue;
-        Bounds3 cb = cell, ca = cell;
-        cb.max[a] = position;
-        ca.min[a] = position;
-        const float nB = static_cast<float>(nBelow), nA = n - static_cast<float>(nEnded);
-        const bool oneSided = nBelow == 0 || nA == 0.0f;
-        if (emptyOnly && !oneSided) continue;
-        const float cost =
-            s_.traversalCost + (oneSided ? emptySideFactor : 1.0f) * s_.intersectionCost * invArea * (halfArea(cb) * nB + halfArea(ca) * nA);
-        if (cost < best.cost) best = {a, position, cost};
+      // All bin boundaries priced at once (vectorised), then the first cheapest taken.
+      std::array<float, kMaxBins> price;
+      if (a == 0) priceBoundaries<0>(c, cell, extent, n, invArea, emptyOnly, emptySideFactor, price);
+      if (a == 1) priceBoundaries<1>(c, cell, extent, n, invArea, emptyOnly, emptySideFactor, price);
+      if (a == 2) priceBoundaries<2>(c, cell, extent, n, invArea, emptyOnly, emptySideFactor, price);
+      // The cheapest, four lanes at a time (vectorised): m[l] is the least of price[l], price[l + 4], ...
+      const size_t padded = (static_cast<size_t>(bins) + 3) & ~size_t{3};
+      std::array<float, 4> m{kInfinity, kInfinity, kInfinity, kInfinity};
+      for (size_t b = 0; b < padded; b += 4)
+        for (size_t l = 0; l < 4; ++l) m[l] = price[b + l] < m[l] ? price[b + l] : m[l];
+      const float least = std::min(std::min(m[0], m[1]), std::min(m[2], m[3]));  // NaN prices never win
+      if (least < best.cost) {
+        size_t b = 1;
+        while (!(price[b] == least)) ++b;  // the first one, as a scan with `<` would take
+        best = {a, lo + (hi - lo) * sh_.binFractions[b], least};
       }
       // Two more candidates: the faces of the primitives' box, which cut off
       // the cell's empty space in one step (bin boundaries would nibble at it).
-      float first = hi, last = lo;
-      for (const KdPrim& p : prims) {
-        first = std::min(first, p.box.min[a]);
-        last = std::max(last, p.box.max[a]);
-      }
+      const float first = std::min(hi, c.first[a]), last = std::max(lo, c.last[a]);
       for (const float position : {first, last}) {
         if (!(position > lo && position < hi)) continue;
         Bounds3 cb = cell, ca = cell;
@@ -179,21 +276,68 @@ class Builder {
     return best;
   }
 
-  KdTree& tree_;
+  // The SAH cost of every bin boundary b = 1 .. bins - 1 on axis A into
+  // cost[b] (infinity where it is no candidate: outside the open cell, or
+  // two-sided when emptyOnly), in the same floating-point operations as
+  // halfArea() of the two cells, so the choice does not depend on how it is
+  // computed. extent: the cell's, clamped at 0 as halfArea() does.
+  template <int A>
+  void priceBoundaries(const BinCounts& c, const Bounds3& cell, const Vec3& extent, float n, float invArea,
+                       bool emptyOnly, float emptySideFactor, std::array<float, kMaxBins>& cost) const {
+    const int bins = sh_.bins;
+    // Boxes starting below boundary b, and ending below it (prefix sums), as floats.
+    std::array<float, kMaxBins> below, above;
+    uint32_t nBelow = 0, nEnded = 0;
+    for (size_t b = 1; b < static_cast<size_t>(bins); ++b) {
+      nBelow += c.starts[A][b - 1];
+      nEnded += c.ends[A][b - 1];
+      below[b] = static_cast<float>(static_cast<int32_t>(nBelow));
+      above[b] = n - static_cast<float>(static_cast<int32_t>(nEnded));
+    }
+    // halfArea's sum e.x e.y + e.y e.z + e.z e.x, in its order, with e[A] = `length` (> 0 where priced).
+    const float ex = extent.x, ey = extent.y, ez = extent.z;
+    const auto area = [=](float length) {
+      if constexpr (A == 0) return length * ey + ey * ez + ez * length;
+      if constexpr (A == 1) return ex * length + length * ez + ez * ex;
+      if constexpr (A == 2) return ex * ey + ey * length + length * ex;
+    };
+    const float lo = cell.min[A], hi = cell.max[A];
+    const float* fraction = sh_.binFractions.data();
+    const float twoSided = s_.intersectionCost * invArea, oneSided = emptySideFactor * s_.intersectionCost * invArea;
+    const float traversal = s_.traversalCost;
+    cost[0] = kInfinity;  // no candidate at the cell's face; the rest of the last four lanes neither
+    std::fill(cost.begin() + bins, cost.begin() + ((bins + 3) & ~3), kInfinity);
+    for (size_t b = 1; b < static_cast<size_t>(bins); ++b) {
+      const float position = lo + (hi - lo) * fraction[b];
+      const float nB = below[b], nA = above[b];
+      // Bitwise & and |: no branches, so the loop vectorises.
+      const bool isOneSided = (nB == 0.0f) | (nA == 0.0f);
+      const float price =
+          traversal + (isOneSided ? oneSided : twoSided) * (area(position - lo) * nB + area(hi - position) * nA);
+      const bool candidate = (position > lo) & (position < hi) & (isOneSided | !emptyOnly);
+      cost[b] = candidate ? price : kInfinity;
+    }
+  }
+
+  Shared& sh_;
   const KdSettings& s_;
-  int maxDepth_;
-  float pad_;
-  int depth_ = 0;
-  double sah_ = 0.0;
+  std::vector<std::array<std::vector<KdPrim>, 2>> scratch_;  // by depth: the two children made there (reused)
+  size_t unreported_ = 0;                                     // nodes made since the last report
+  std::unique_ptr<Subtree> out_ = std::make_unique<Subtree>();
 };
 
 }  // namespace
 
 BuildTotals buildBinned(KdTree& tree, std::vector<KdPrim> prims, const KdSettings& s, int maxDepth, float pad) {
-  tree.primIds.reserve(2 * prims.size());  // leaves append their slots (straddlers repeat)
-  Builder builder(tree, s, maxDepth, pad);
-  builder.build(prims, tree.bounds, 0, 0, 0);
-  return {builder.depth(), builder.sahSum()};
+  Shared shared{s, std::clamp(s.bins, 2, kMaxBins), maxDepth, pad, tree.triangles, tree.triangleCount,
+                currentPhaseSink(), {}, {}};
+  for (int b = 0; b <= shared.bins; ++b)
+    shared.binFractions[static_cast<size_t>(b)] = static_cast<float>(b) / static_cast<float>(shared.bins);
+  Builder builder(shared);
+  std::vector<KdPrim>& root = builder.input(0);
+  root = std::move(prims);
+  builder.build(root, tree.bounds, 0, 0, 0);
+  return builder.takeTree()->writeTree(tree);
 }
 
 }  // namespace ll::a4::kdbuild

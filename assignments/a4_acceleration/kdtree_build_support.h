@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "core/math.h"
@@ -42,7 +43,9 @@ inline float halfArea(const Bounds3& b) {
 // The box of the part of triangle (p0, p1, p2) inside `cell` (Sutherland-
 // Hodgman against the six planes), or an empty box if there is none.
 inline Bounds3 clippedTriangleBox(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Bounds3& cell) {
-  std::array<Vec3, 9> poly{p0, p1, p2}, next{};
+  std::array<Vec3, 9> bufferA{p0, p1, p2}, bufferB;  // a triangle cut by six planes has at most 9 corners
+  Vec3* poly = bufferA.data();
+  Vec3* next = bufferB.data();
   size_t n = 3;
   for (int a = 0; a < 3 && n > 0; ++a)
     for (int side = 0; side < 2 && n > 0; ++side) {
@@ -54,7 +57,7 @@ inline Bounds3 clippedTriangleBox(const Vec3& p0, const Vec3& p1, const Vec3& p2
       size_t m = 0;
       for (size_t i = 0; i < n; ++i) {
         const Vec3& u = poly[i];
-        const Vec3& v = poly[(i + 1) % n];
+        const Vec3& v = poly[i + 1 == n ? 0 : i + 1];
         const bool uIn = inside(u), vIn = inside(v);
         if (uIn) next[m++] = u;
         if (uIn != vIn) {
@@ -64,7 +67,7 @@ inline Bounds3 clippedTriangleBox(const Vec3& p0, const Vec3& p1, const Vec3& p2
           next[m++] = x;
         }
       }
-      poly = next;
+      std::swap(poly, next);
       n = m;
     }
   Bounds3 b;

@@ -31,12 +31,12 @@
 #include <utility>
 
 #include <tbb/parallel_invoke.h>
-#include <tbb/task_group.h>
 
 #include "core/huge_pages.h"
 #include "core/phase_progress.h"
 #include "kdtree.h"
 #include "kdtree_build_support.h"
+#include "kdtree_subtree.h"
 
 namespace ll::a4::kdbuild {
 
@@ -138,12 +138,11 @@ class Builder {
   // The input of a subtree's root at `depth`, to fill before build().
   NodeData& input(int depth) { return scratch_[static_cast<size_t>(depth)][0]; }
 
-  // Appends the subtree of `cell` over `in` to nodes_ and slots_. depth:
-  // edges from the root; splits: of those, the ones that left primitives on
-  // both sides (empty-space cuts do not count against maxDepth).
+  // Builds the subtree of `cell` over `in` into tree(). depth: edges from
+  // the root; splits: of those, the ones that left primitives on both sides
+  // (empty-space cuts do not count against maxDepth).
   void build(NodeData& in, const Bounds3& cell, int depth, int splits, int badRefines) {
-    const auto index = static_cast<uint32_t>(nodes_.size());
-    nodes_.emplace_back();
+    const uint32_t index = out_->addNode();
     // Nodes made by every builder of the tree, counted in batches (one shared counter per node would
     // bounce its cache line between the threads); reported, which is also where a GUI pane's newer
     // request cancels the build (its phase report throws).
@@ -152,8 +151,8 @@ class Builder {
       unreported_ = 0;
       if (sh_.sink) (*sh_.sink)("kd-tree build (" + std::to_string(made) + " nodes)", -1.0);
     }
-    const size_t made = sh_.nodes.load(std::memory_order_relaxed) + nodes_.size();
-    depth_ = std::max(depth_, depth);
+    const size_t made = sh_.nodes.load(std::memory_order_relaxed) + out_->nodeCount();
+    out_->depth = std::max(out_->depth, depth);
     const size_t n = in.prims.size();
     const double area = halfArea(cell);
     if (n == 0 || splits >= sh_.maxDepth || depth >= kKdMaxDepth || made + 2 > kKdMaxNodes)
@@ -174,7 +173,7 @@ class Builder {
     auto& children = scratch_[static_cast<size_t>(depth + 1)];
     split(in, a, plane.position, plane.planarBelow, cellBelow, cellAbove, children[0], children[1]);
     if (n >= kParallelPrimitives) in = NodeData{};  // a big node's buffers are not worth keeping for reuse
-    sah_ += static_cast<double>(s_.traversalCost) * area;
+    out_->sah += static_cast<double>(s_.traversalCost) * area;
     const bool belowEmpty = children[0].prims.empty(), aboveEmpty = children[1].prims.empty();
     const int nextSplits = splits + (belowEmpty || aboveEmpty ? 0 : 1);
 
@@ -185,82 +184,16 @@ class Builder {
       tbb::parallel_invoke(
           [&] { below->build(below->input(depth + 1), cellBelow, depth + 1, nextSplits, badRefines); },
           [&] { above->build(above->input(depth + 1), cellAbove, depth + 1, nextSplits, badRefines); });
-      // Each subtree stays where its builder made it; a link node marks where it goes.
-      nodes_[index] = KdNode::interior(a, plane.position, index + 2, false, false);
-      for (auto* sub : {&below, &above}) {
-        nodes_.push_back(KdNode::leafNode(static_cast<uint32_t>(subs_.size()), kLink));
-        (*sub)->releaseScratch();  // it lives on until the tree is written: keep only its nodes and slots
-        subs_.push_back(std::move(*sub));
-      }
+      // The subtrees live on until the tree is written; their builders' scratch goes now.
+      out_->setInteriorOfSubtrees(index, a, plane.position, below->takeTree(), above->takeTree());
       return;
     }
     build(children[0], cellBelow, depth + 1, nextSplits, badRefines);
-    nodes_[index] = KdNode::interior(a, plane.position, static_cast<uint32_t>(nodes_.size()), belowEmpty, aboveEmpty);
+    out_->setInterior(index, a, plane.position, belowEmpty, aboveEmpty);
     build(children[1], cellAbove, depth + 1, nextSplits, badRefines);
   }
 
-  // The final layout, written once: this builder's nodes in order with each
-  // link replaced by its subtree (depth first, as a serial build makes it),
-  // leaf slots in leaf order. Sizes first, so subtrees can be written in parallel.
-  void countTotals() {
-    totalNodes_ = nodes_.size() - subs_.size();
-    totalSlots_ = slots_.size();
-    for (auto& sub : subs_) {
-      sub->countTotals();
-      totalNodes_ += sub->totalNodes_;
-      totalSlots_ += sub->totalSlots_;
-      depth_ = std::max(depth_, sub->depth_);
-      sah_ += sub->sah_;
-    }
-  }
-
-  // Writes the subtree at nodes[nodeBase...] and slots[slotBase...], freeing this builder's copy as it
-  // goes (the tree is not held twice). Preconditions: countTotals() ran.
-  void emit(KdNode* nodes, uint32_t nodeBase, uint32_t* slots, uint32_t slotBase) {
-    // Where each local node lands: links stand for their subtree's nodes.
-    std::vector<uint32_t> at(nodes_.size());
-    std::vector<std::pair<uint32_t, uint32_t>> subBase(subs_.size());  // a link's node and slot base
-    uint32_t node = nodeBase, slot = slotBase;
-    for (size_t i = 0; i < nodes_.size(); ++i) {
-      at[i] = node;
-      const KdNode& nd = nodes_[i];
-      if (nd.isLeaf() && nd.count() == kLink) {
-        const Builder& sub = *subs_[nd.first()];
-        subBase[nd.first()] = {node, slot};
-        node += static_cast<uint32_t>(sub.totalNodes_);
-        slot += static_cast<uint32_t>(sub.totalSlots_);
-      } else {
-        ++node;
-        if (nd.isLeaf()) slot += nd.count();
-      }
-    }
-    tbb::task_group subtrees;
-    for (size_t k = 0; k < subs_.size(); ++k)
-      subtrees.run([&, k] { subs_[k]->emit(nodes, subBase[k].first, slots, subBase[k].second); });
-    slot = slotBase;
-    for (size_t i = 0; i < nodes_.size(); ++i) {
-      const KdNode& nd = nodes_[i];
-      if (!nd.isLeaf()) {
-        nodes[at[i]] = KdNode::interior(nd.axis(), nd.split(), at[nd.aboveChild()], nd.belowEmpty(), nd.aboveEmpty());
-      } else if (nd.count() == kLink) {
-        slot += static_cast<uint32_t>(subs_[nd.first()]->totalSlots_);
-      } else {
-        nodes[at[i]] = KdNode::leafNode(slot, nd.count());
-        std::copy_n(slots_.begin() + nd.first(), nd.count(), slots + slot);
-        slot += nd.count();
-      }
-    }
-    nodes_ = {};
-    slots_ = {};
-    subtrees.wait();
-  }
-
-  size_t totalNodes_ = 0, totalSlots_ = 0;  // countTotals(): the whole subtree's, links resolved
-
-  std::vector<KdNode> nodes_;     // subtree in depth-first order; aboveChild indices within it
-  std::vector<uint32_t> slots_;   // leaf slots; leaves' first slot within it
-  int depth_ = 0;
-  double sah_ = 0.0;
+  std::unique_ptr<Subtree> takeTree() { return std::move(out_); }
 
  private:
   // The cheapest candidate over the three axes. emptyOnly: only planes with
@@ -428,13 +361,6 @@ class Builder {
     to.prims.push_back(p);
   }
 
-  void releaseScratch() {
-    scratch_ = {};
-    dest_ = {};
-    straddlers_ = {};
-    merged_ = {};
-  }
-
   static void mergeStraddlers(std::vector<Event>& events, std::vector<Event>& added, std::vector<Event>& merged) {
     if (added.empty()) return;
     if (added.size() <= 16) {  // the common case deep in the tree: insertion sort beats std::sort's set-up
@@ -453,9 +379,8 @@ class Builder {
   }
 
   void makeLeaf(uint32_t index, const std::vector<KdPrim>& prims, double area) {
-    nodes_[index] = KdNode::leafNode(static_cast<uint32_t>(slots_.size()), static_cast<uint32_t>(prims.size()));
-    for (const KdPrim& p : prims) slots_.push_back(p.prim);
-    sah_ += static_cast<double>(s_.intersectionCost) * static_cast<double>(prims.size()) * area;
+    out_->setLeaf(index, prims);
+    out_->sah += static_cast<double>(s_.intersectionCost) * static_cast<double>(prims.size()) * area;
   }
 
   Shared& sh_;
@@ -467,9 +392,7 @@ class Builder {
   std::array<EventLists, 2> straddlers_;  // split(): new events of clipped boxes, below and above
   EventLists merged_;                     // split(): scratch of the merges, by axis
   size_t unreported_ = 0;  // nodes made since the last report
-  std::vector<std::unique_ptr<Builder>> subs_;  // subtrees built apart; a link node (count kLink) names one
-  // A leaf count no leaf has (most primitives < 2^30): marks a link node, its first() the index in subs_.
-  static constexpr uint32_t kLink = (1u << 30) - 1u;
+  std::unique_ptr<Subtree> out_ = std::make_unique<Subtree>();
 };
 
 }  // namespace
@@ -491,13 +414,7 @@ BuildTotals buildSweep(KdTree& tree, std::vector<KdPrim> prims, const KdSettings
                          [&] { radixSort(root.events[2], scratch[2]); });
   }
   builder.build(root, tree.bounds, 0, 0, 0);
-  builder.countTotals();
-  tree.nodes.clear();  // exact sizes: no copy to shrink them after
-  tree.primIds.clear();
-  resizeOnHugePages(tree.nodes, builder.totalNodes_);
-  resizeOnHugePages(tree.primIds, builder.totalSlots_);
-  builder.emit(tree.nodes.data(), 0, tree.primIds.data(), 0);
-  return {builder.depth_, builder.sah_};
+  return builder.takeTree()->writeTree(tree);
 }
 
 }  // namespace ll::a4::kdbuild
