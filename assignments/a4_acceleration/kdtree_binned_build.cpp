@@ -8,38 +8,24 @@
 // Kapustin, "Highly parallel fast KD-tree construction for interactive ray
 // tracing of dynamic scenes", Eurographics 2007, count bins the same way.
 //
-// Fast where it pays: big nodes count their bins in parallel and build their
-// two subtrees in parallel (oneTBB), each into its own Subtree, written out
-// once at the end; every builder reuses its buffers, one pair per depth.
-// The trees are the same on any number of threads, and the same as the
-// first, serial version made.
+// Fast where it pays: big nodes count their bins in parallel, and the
+// recursion the sweep build shares (kdtree_top_down.h) builds big nodes' two
+// subtrees in parallel and reuses its buffers. The trees are the same on any
+// number of threads, and the same as the first, serial version made.
 #include <algorithm>
 #include <array>
-#include <atomic>
-#include <memory>
-#include <string>
-#include <utility>
+#include <vector>
 
 #include <tbb/blocked_range.h>
-#include <tbb/parallel_invoke.h>
 #include <tbb/parallel_reduce.h>
 
-#include "core/phase_progress.h"
 #include "kdtree.h"
 #include "kdtree_build_support.h"
-#include "kdtree_subtree.h"
+#include "kdtree_top_down.h"
 
 namespace ll::a4::kdbuild {
 
 namespace {
-
-struct Plane {
-  int axis = -1;  // -1: no plane found
-  float position = 0.0f;
-  float cost = kInfinity;
-};
-
-constexpr int kMaxBins = 64;
 
 // Where a node's boxes start and end, per axis: bin counts and the faces of their box.
 struct BinCounts {
@@ -64,88 +50,20 @@ struct BinCounts {
   }
 };
 
-// Shared by the builders of one tree (the parallel subtrees'), read-only but the counter.
-struct Shared {
-  const KdSettings& settings;
-  int bins;
-  int maxDepth;
-  float pad;
-  const std::vector<LeafTriangle>& triangles;  // by primitive id
-  uint32_t triangleCount;
-  const PhaseSink* sink;  // the calling thread's progress sink (thread-safe), or null
-  std::atomic<size_t> nodes{0};
-  std::array<float, kMaxBins + 1> binFractions{};  // b / bins for b = 0 .. bins (no division per candidate)
-};
-
-// Nodes with at least this many primitives count their bins, and build their subtrees, in parallel.
-constexpr size_t kParallelPrimitives = 8192;
-
-class Builder {
+class Builder : public TopDownBuilder<Builder, std::vector<KdPrim>> {
  public:
-  explicit Builder(Shared& shared) : sh_(shared), s_(shared.settings), scratch_(kKdMaxDepth + 2) {}
-
-  // The input of a subtree's root at `depth`, to fill before build().
-  std::vector<KdPrim>& input(int depth) { return scratch_[static_cast<size_t>(depth)][0]; }
-
-  // Builds the subtree of the cell `cell` holding `prims` (boxes clipped to
-  // it) into tree(). depth: edges from the root; splits: of those, the ones
-  // that left primitives on both sides (cutting off empty space does not
-  // count against maxDepth, or a small object in a big scene would run out
-  // of depth before its primitives are separated).
-  void build(std::vector<KdPrim>& prims, const Bounds3& cell, int depth, int splits, int badRefines) {
-    const uint32_t index = out_->addNode();
-    // Nodes made by every builder, counted in batches; reported, which is also where a GUI pane's newer
-    // request cancels the build (its phase report throws).
-    if ((++unreported_ & 0x3FFF) == 0 || prims.size() > 50000) {
-      const size_t made = sh_.nodes.fetch_add(unreported_, std::memory_order_relaxed) + unreported_;
-      unreported_ = 0;
-      if (sh_.sink) (*sh_.sink)("kd-tree build (" + std::to_string(made) + " nodes)", -1.0);
-    }
-    const size_t made = sh_.nodes.load(std::memory_order_relaxed) + out_->nodeCount();
-    out_->depth = std::max(out_->depth, depth);
-    const size_t n = prims.size();
-    const double area = halfArea(cell);
-    if (n == 0 || splits >= sh_.maxDepth || depth >= kKdMaxDepth || made + 2 > kKdMaxNodes)
-      return makeLeaf(index, prims, area);
-    // A node with few primitives is a leaf unless a plane with nothing on one
-    // side lowers its SAH cost: so a wall lying in the cell's face gets a
-    // thin slab of its own, and rays crossing the rest of the cell skip it.
-    const bool few = n <= static_cast<size_t>(s_.maxLeaf);
-    const Plane plane = bestPlane(prims, cell, few);
-    const float leafCost = s_.intersectionCost * static_cast<float>(n);
-    if (plane.axis < 0 || (few && plane.cost >= leafCost)) return makeLeaf(index, prims, area);
-    if (plane.cost >= leafCost) ++badRefines;  // PBRT: a few uphill splits out of local minima; none below 16 primitives
-    if ((plane.cost >= leafCost && n < 16) || badRefines >= 3) return makeLeaf(index, prims, area);
-
-    const int a = plane.axis;
-    Bounds3 cellBelow = cell, cellAbove = cell;
-    cellBelow.max[a] = plane.position;
-    cellAbove.min[a] = plane.position;
-    auto& children = scratch_[static_cast<size_t>(depth + 1)];
-    partition(prims, a, plane.position, cellBelow, cellAbove, children[0], children[1]);
-    if (n >= kParallelPrimitives) std::vector<KdPrim>().swap(prims);  // not worth keeping for reuse
-    out_->sah += static_cast<double>(s_.traversalCost) * area;
-    const bool belowEmpty = children[0].empty(), aboveEmpty = children[1].empty();
-    const int nextSplits = splits + (belowEmpty || aboveEmpty ? 0 : 1);
-
-    if (n >= kParallelPrimitives && !belowEmpty && !aboveEmpty) {
-      auto below = std::make_unique<Builder>(sh_), above = std::make_unique<Builder>(sh_);
-      std::swap(below->input(depth + 1), children[0]);
-      std::swap(above->input(depth + 1), children[1]);
-      tbb::parallel_invoke(
-          [&] { below->build(below->input(depth + 1), cellBelow, depth + 1, nextSplits, badRefines); },
-          [&] { above->build(above->input(depth + 1), cellAbove, depth + 1, nextSplits, badRefines); });
-      out_->setInteriorOfSubtrees(index, a, plane.position, below->takeTree(), above->takeTree());
-      return;
-    }
-    build(children[0], cellBelow, depth + 1, nextSplits, badRefines);
-    out_->setInterior(index, a, plane.position, belowEmpty, aboveEmpty);
-    build(children[1], cellAbove, depth + 1, nextSplits, badRefines);
-  }
-
-  std::unique_ptr<Subtree> takeTree() { return std::move(out_); }
+  explicit Builder(BuildShared& shared) : TopDownBuilder(shared) {}
 
  private:
+  friend class TopDownBuilder<Builder, std::vector<KdPrim>>;  // calls the three below
+
+  static const std::vector<KdPrim>& prims(const std::vector<KdPrim>& in) { return in; }
+
+  void split(const std::vector<KdPrim>& in, const KdPlane& plane, const Bounds3& cellBelow, const Bounds3& cellAbove,
+             std::vector<KdPrim>& below, std::vector<KdPrim>& above) const {
+    partition(in, plane.axis, plane.position, cellBelow, cellAbove, below, above);
+  }
+
   // Partition: below if the box starts below the plane, above if it ends
   // above it; a box lying in the plane (planar primitive) goes above. So
   // every primitive goes somewhere, and a hit point on the plane is in a
@@ -184,11 +102,6 @@ class Builder {
     if (!b.empty()) out.push_back({b, p.prim});
   }
 
-  void makeLeaf(uint32_t index, const std::vector<KdPrim>& prims, double area) {
-    out_->setLeaf(index, prims);
-    out_->sah += static_cast<double>(s_.intersectionCost) * static_cast<double>(prims.size()) * area;
-  }
-
   // Counts, in one pass, where the boxes of prims[0, count) start and end:
   // bin b of axis a spans [lo + b / scale, lo + (b + 1) / scale) (the last
   // bin reaches on). Clamped as a float before the conversion: (x - lo) *
@@ -216,7 +129,7 @@ class Builder {
   // emptyOnly: only planes with no primitive on one side, and their cost
   // without the empty bonus (the true SAH cost, to compare with a leaf's).
   // On a tie the first candidate wins: lower axis, then lower boundary, then the faces.
-  Plane bestPlane(const std::vector<KdPrim>& prims, const Bounds3& cell, bool emptyOnly) const {
+  KdPlane bestPlane(const std::vector<KdPrim>& prims, const Bounds3& cell, bool emptyOnly) const {
     const int bins = sh_.bins;
     Vec3 scale;
     for (int a = 0; a < 3; ++a) scale[a] = static_cast<float>(bins) / (cell.max[a] - cell.min[a]);
@@ -236,7 +149,7 @@ class Builder {
       countBins(prims.data(), prims.size(), cell.min, scale, c);
     }
 
-    Plane best;
+    KdPlane best;
     const float emptySideFactor = emptyOnly ? 1.0f : 1.0f - s_.emptyBonus;  // cost factor of a one-sided plane
     const float n = static_cast<float>(prims.size());
     const float invArea = 1.0f / halfArea(cell);
@@ -258,7 +171,7 @@ class Builder {
       if (least < best.cost) {
         size_t b = 1;
         while (!(price[b] == least)) ++b;  // the first one, as a scan with `<` would take
-        best = {a, lo + (hi - lo) * sh_.binFractions[b], least};
+        best = {a, lo + (hi - lo) * sh_.binFractions[b], least, false};
       }
       // Two more candidates: the faces of the primitives' box, which cut off
       // the cell's empty space in one step (bin boundaries would nibble at it).
@@ -270,7 +183,7 @@ class Builder {
         ca.min[a] = position;
         const float side = position == first ? halfArea(ca) : halfArea(cb);  // the side holding all n
         const float cost = s_.traversalCost + emptySideFactor * s_.intersectionCost * invArea * side * n;
-        if (cost < best.cost) best = {a, position, cost};
+        if (cost < best.cost) best = {a, position, cost, false};
       }
     }
     return best;
@@ -319,21 +232,12 @@ class Builder {
       cost[b] = candidate ? price : kInfinity;
     }
   }
-
-  Shared& sh_;
-  const KdSettings& s_;
-  std::vector<std::array<std::vector<KdPrim>, 2>> scratch_;  // by depth: the two children made there (reused)
-  size_t unreported_ = 0;                                     // nodes made since the last report
-  std::unique_ptr<Subtree> out_ = std::make_unique<Subtree>();
 };
 
 }  // namespace
 
 BuildTotals buildBinned(KdTree& tree, std::vector<KdPrim> prims, const KdSettings& s, int maxDepth, float pad) {
-  Shared shared{s, std::clamp(s.bins, 2, kMaxBins), maxDepth, pad, tree.triangles, tree.triangleCount,
-                currentPhaseSink(), {}, {}};
-  for (int b = 0; b <= shared.bins; ++b)
-    shared.binFractions[static_cast<size_t>(b)] = static_cast<float>(b) / static_cast<float>(shared.bins);
+  BuildShared shared(tree, s, maxDepth, pad);
   Builder builder(shared);
   std::vector<KdPrim>& root = builder.input(0);
   root = std::move(prims);

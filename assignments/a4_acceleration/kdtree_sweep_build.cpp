@@ -13,30 +13,23 @@
 // every node costs O(n) and the tree O(n log n), with no sorting below the
 // root but of the straddlers.
 //
-// The termination rules, the clipping and the statistics are the binned
-// build's (kdtree_binned_build.cpp). Two things differ: the candidates, and
-// where a box lying in the plane goes: to the cheaper side (Wald and Havran's
-// p_side), where the binned build always sends it above.
-// Large nodes build their two subtrees in parallel (oneTBB), each into its
-// own node array, with a link where the subtree goes; the tree is written
-// out once at the end, straight into its final arrays (no copy per level).
-// Large nodes also sweep their three axes, and filter their three event
-// lists, in parallel.
+// The recursion (termination rules, parallel subtrees, statistics) and the
+// clipping are the binned build's (kdtree_top_down.h,
+// kdtree_build_support.h). Two things differ: the candidates, and where a
+// box lying in the plane goes: to the cheaper side (Wald and Havran's
+// p_side), where the binned build always sends it above. Large nodes also
+// sweep their three axes, and filter their three event lists, in parallel.
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <bit>
-#include <memory>
-#include <string>
-#include <utility>
+#include <vector>
 
 #include <tbb/parallel_invoke.h>
 
 #include "core/huge_pages.h"
-#include "core/phase_progress.h"
 #include "kdtree.h"
 #include "kdtree_build_support.h"
-#include "kdtree_subtree.h"
+#include "kdtree_top_down.h"
 
 namespace ll::a4::kdbuild {
 
@@ -109,98 +102,20 @@ struct NodeData {
   }
 };
 
-struct Plane {
-  int axis = -1;  // -1: no plane found
-  float position = 0.0f;
-  float cost = kInfinity;
-  bool planarBelow = false;  // boxes lying in the plane go below (else above)
-};
-
-// Shared by the builders of one tree (the parallel subtrees'), read-only but the counter.
-struct Shared {
-  const KdSettings& settings;
-  int maxDepth;
-  float pad;
-  const std::vector<LeafTriangle>& triangles;  // by primitive id
-  uint32_t triangleCount;
-  const PhaseSink* sink;  // the calling thread's progress sink (thread-safe), or null
-  std::atomic<size_t> nodes{0};
-  std::vector<float> binFractions;  // b / bins for b = 0..bins (the binned build's bin boundaries, no division)
-};
-
-// Nodes with at least this many primitives build their subtrees in parallel.
-constexpr size_t kParallelPrimitives = 8192;
-
-class Builder {
+class Builder : public TopDownBuilder<Builder, NodeData> {
  public:
-  explicit Builder(Shared& shared) : sh_(shared), s_(shared.settings), scratch_(kKdMaxDepth + 2) {}
-
-  // The input of a subtree's root at `depth`, to fill before build().
-  NodeData& input(int depth) { return scratch_[static_cast<size_t>(depth)][0]; }
-
-  // Builds the subtree of `cell` over `in` into tree(). depth: edges from
-  // the root; splits: of those, the ones that left primitives on both sides
-  // (empty-space cuts do not count against maxDepth).
-  void build(NodeData& in, const Bounds3& cell, int depth, int splits, int badRefines) {
-    const uint32_t index = out_->addNode();
-    // Nodes made by every builder of the tree, counted in batches (one shared counter per node would
-    // bounce its cache line between the threads); reported, which is also where a GUI pane's newer
-    // request cancels the build (its phase report throws).
-    if ((++unreported_ & 0x3FFF) == 0 || in.prims.size() > 50000) {
-      const size_t made = sh_.nodes.fetch_add(unreported_, std::memory_order_relaxed) + unreported_;
-      unreported_ = 0;
-      if (sh_.sink) (*sh_.sink)("kd-tree build (" + std::to_string(made) + " nodes)", -1.0);
-    }
-    const size_t made = sh_.nodes.load(std::memory_order_relaxed) + out_->nodeCount();
-    out_->depth = std::max(out_->depth, depth);
-    const size_t n = in.prims.size();
-    const double area = halfArea(cell);
-    if (n == 0 || splits >= sh_.maxDepth || depth >= kKdMaxDepth || made + 2 > kKdMaxNodes)
-      return makeLeaf(index, in.prims, area);
-    const bool few = n <= static_cast<size_t>(s_.maxLeaf);
-    const Plane plane = bestPlane(in, cell, few);
-    const float leafCost = s_.intersectionCost * static_cast<float>(n);
-    if (plane.axis < 0 || (few && plane.cost >= leafCost)) return makeLeaf(index, in.prims, area);
-    // PBRT allows a few uphill splits to get out of local minima; not below 16 primitives, where they
-    // only multiplied nodes (235k bunny: 3.4 M -> 2.0 M nodes, SAH cost within 0.4 %, render time alike).
-    if (plane.cost >= leafCost) ++badRefines;
-    if ((plane.cost >= leafCost && n < 16) || badRefines >= 3) return makeLeaf(index, in.prims, area);
-
-    const int a = plane.axis;
-    Bounds3 cellBelow = cell, cellAbove = cell;
-    cellBelow.max[a] = plane.position;
-    cellAbove.min[a] = plane.position;
-    auto& children = scratch_[static_cast<size_t>(depth + 1)];
-    split(in, a, plane.position, plane.planarBelow, cellBelow, cellAbove, children[0], children[1]);
-    if (n >= kParallelPrimitives) in = NodeData{};  // a big node's buffers are not worth keeping for reuse
-    out_->sah += static_cast<double>(s_.traversalCost) * area;
-    const bool belowEmpty = children[0].prims.empty(), aboveEmpty = children[1].prims.empty();
-    const int nextSplits = splits + (belowEmpty || aboveEmpty ? 0 : 1);
-
-    if (n >= kParallelPrimitives && !belowEmpty && !aboveEmpty) {
-      auto below = std::make_unique<Builder>(sh_), above = std::make_unique<Builder>(sh_);
-      std::swap(below->input(depth + 1), children[0]);
-      std::swap(above->input(depth + 1), children[1]);
-      tbb::parallel_invoke(
-          [&] { below->build(below->input(depth + 1), cellBelow, depth + 1, nextSplits, badRefines); },
-          [&] { above->build(above->input(depth + 1), cellAbove, depth + 1, nextSplits, badRefines); });
-      // The subtrees live on until the tree is written; their builders' scratch goes now.
-      out_->setInteriorOfSubtrees(index, a, plane.position, below->takeTree(), above->takeTree());
-      return;
-    }
-    build(children[0], cellBelow, depth + 1, nextSplits, badRefines);
-    out_->setInterior(index, a, plane.position, belowEmpty, aboveEmpty);
-    build(children[1], cellAbove, depth + 1, nextSplits, badRefines);
-  }
-
-  std::unique_ptr<Subtree> takeTree() { return std::move(out_); }
+  explicit Builder(BuildShared& shared) : TopDownBuilder(shared) {}
 
  private:
+  friend class TopDownBuilder<Builder, NodeData>;  // calls prims(), bestPlane() and split()
+
+  static const std::vector<KdPrim>& prims(const NodeData& in) { return in.prims; }
+
   // The cheapest candidate over the three axes. emptyOnly: only planes with
   // no primitive on one side, priced without the empty bonus (the true SAH
   // cost, to compare with a leaf's).
-  Plane bestPlane(const NodeData& in, const Bounds3& cell, bool emptyOnly) const {
-    std::array<Plane, 3> best;
+  KdPlane bestPlane(const NodeData& in, const Bounds3& cell, bool emptyOnly) const {
+    std::array<KdPlane, 3> best;
     if (in.prims.size() >= kParallelPrimitives)
       tbb::parallel_invoke([&] { best[0] = bestPlane(in, cell, emptyOnly, 0, kInfinity); },
                            [&] { best[1] = bestPlane(in, cell, emptyOnly, 1, kInfinity); },
@@ -209,16 +124,16 @@ class Builder {
       for (int a = 0; a < 3; ++a)
         best[static_cast<size_t>(a)] = bestPlane(in, cell, emptyOnly, a, a == 0 ? kInfinity : std::min(best[0].cost, best[1].cost));
     // The cheapest; on a tie the lowest axis.
-    Plane cheapest;
-    for (const Plane& p : best)
+    KdPlane cheapest;
+    for (const KdPlane& p : best)
       if (p.cost < cheapest.cost) cheapest = p;
     return cheapest;
   }
 
   // The cheapest candidate on axis a; one costing more than `beaten` (the best on other axes) may be
   // missed (then a plane costing more is returned).
-  Plane bestPlane(const NodeData& in, const Bounds3& cell, bool emptyOnly, int a, float beaten) const {
-    Plane best;
+  KdPlane bestPlane(const NodeData& in, const Bounds3& cell, bool emptyOnly, int a, float beaten) const {
+    KdPlane best;
     const float emptySideFactor = emptyOnly ? 1.0f : 1.0f - s_.emptyBonus;
     const auto n = static_cast<uint32_t>(in.prims.size());
     const float invArea = 1.0f / halfArea(cell);
@@ -246,7 +161,7 @@ class Builder {
       // keeps trees as cheap overall). Linear: only the first and last boundary in a gap can be its
       // cheapest, so this costs O(1) per gap. A gap reaching the cell's face offers its middle too (the
       // Cornell box's walls all lie in its faces: the middle of the box separates them).
-      const int bins = std::clamp(s_.bins, 2, 64);
+      const int bins = sh_.bins;
       const float binsPerLength = static_cast<float>(bins) / (hi - lo);
       const float* fraction = sh_.binFractions.data();  // b / bins
       const auto boundary = [&](int b) { return lo + (hi - lo) * fraction[b]; };
@@ -299,12 +214,15 @@ class Builder {
     return best;
   }
 
-  // Splits `in` at (axis a, position) into `below` and `above`: boxes
-  // starting below go below, boxes ending above go above, boxes lying in the
-  // plane to the side planarBelow says (either holds them: cells are closed);
+  // Splits `in` at the plane into `below` and `above`: boxes starting below
+  // go below, boxes ending above go above, boxes lying in the plane to the
+  // side plane.planarBelow says (either holds them: cells are closed);
   // straddling triangles are clipped to each cell.
-  void split(NodeData& in, int a, float position, bool planarBelow, const Bounds3& cellBelow,
-             const Bounds3& cellAbove, NodeData& below, NodeData& above) {
+  void split(const NodeData& in, const KdPlane& plane, const Bounds3& cellBelow, const Bounds3& cellAbove,
+             NodeData& below, NodeData& above) {
+    const int a = plane.axis;
+    const float position = plane.position;
+    const bool planarBelow = plane.planarBelow;
     below.clear();
     above.clear();
     const size_t n = in.prims.size();
@@ -378,29 +296,17 @@ class Builder {
     events.swap(merged);
   }
 
-  void makeLeaf(uint32_t index, const std::vector<KdPrim>& prims, double area) {
-    out_->setLeaf(index, prims);
-    out_->sah += static_cast<double>(s_.intersectionCost) * static_cast<double>(prims.size()) * area;
-  }
-
-  Shared& sh_;
-  const KdSettings& s_;
-  std::vector<std::array<NodeData, 2>> scratch_;  // by depth: the two children made there (reused)
   // split(): where each primitive goes: its index in the child, kAbove set for the child above; or kStraddles.
   std::vector<uint32_t> dest_;
   static constexpr uint32_t kAbove = 1u << 31, kStraddles = ~0u;
   std::array<EventLists, 2> straddlers_;  // split(): new events of clipped boxes, below and above
   EventLists merged_;                     // split(): scratch of the merges, by axis
-  size_t unreported_ = 0;  // nodes made since the last report
-  std::unique_ptr<Subtree> out_ = std::make_unique<Subtree>();
 };
 
 }  // namespace
 
 BuildTotals buildSweep(KdTree& tree, std::vector<KdPrim> prims, const KdSettings& s, int maxDepth, float pad) {
-  Shared shared{s, maxDepth, pad, tree.triangles, tree.triangleCount, currentPhaseSink(), {}, {}};
-  const int bins = std::clamp(s.bins, 2, 64);
-  for (int b = 0; b <= bins; ++b) shared.binFractions.push_back(static_cast<float>(b) / static_cast<float>(bins));
+  BuildShared shared(tree, s, maxDepth, pad);
   Builder builder(shared);
   NodeData& root = builder.input(0);
   const auto n = static_cast<uint32_t>(prims.size());
