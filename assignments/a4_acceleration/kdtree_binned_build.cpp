@@ -55,26 +55,23 @@ class Builder : public TopDownBuilder<Builder, std::vector<KdPrim>> {
   explicit Builder(BuildShared& shared) : TopDownBuilder(shared) {}
 
  private:
-  friend class TopDownBuilder<Builder, std::vector<KdPrim>>;  // calls the three below
+  friend class TopDownBuilder<Builder, std::vector<KdPrim>>;  // calls prims(), bestPlane() and split()
 
   static const std::vector<KdPrim>& prims(const std::vector<KdPrim>& in) { return in; }
 
-  void split(const std::vector<KdPrim>& in, const KdPlane& plane, const Bounds3& cellBelow, const Bounds3& cellAbove,
-             std::vector<KdPrim>& below, std::vector<KdPrim>& above) const {
-    partition(in, plane.axis, plane.position, cellBelow, cellAbove, below, above);
-  }
-
-  // Partition: below if the box starts below the plane, above if it ends
-  // above it; a box lying in the plane (planar primitive) goes above. So
-  // every primitive goes somewhere, and a hit point on the plane is in a
+  // Splits `prims` at the plane: below if the box starts below it, above if
+  // it ends above it; a box lying in the plane (planar primitive) goes above.
+  // So every primitive goes somewhere, and a hit point on the plane is in a
   // cell holding its primitive. A straddling triangle is clipped to each cell.
-  void partition(const std::vector<KdPrim>& prims, int a, float split, const Bounds3& cellBelow,
-                 const Bounds3& cellAbove, std::vector<KdPrim>& below, std::vector<KdPrim>& above) const {
+  void split(const std::vector<KdPrim>& prims, const KdPlane& plane, const Bounds3& cellBelow,
+             const Bounds3& cellAbove, std::vector<KdPrim>& below, std::vector<KdPrim>& above) const {
+    const int a = plane.axis;
+    const float position = plane.position;
     below.clear();
     above.clear();
     for (const KdPrim& p : prims) {
-      const bool toBelow = p.box.min[a] < split;
-      const bool toAbove = p.box.max[a] > split || (p.box.min[a] == split && p.box.max[a] == split);
+      const bool toBelow = p.box.min[a] < position;
+      const bool toAbove = p.box.max[a] > position || (p.box.min[a] == position && p.box.max[a] == position);
       if (toBelow && toAbove && p.prim < sh_.triangleCount) {
         clipInto(p, cellBelow, below);
         clipInto(p, cellAbove, above);
@@ -82,12 +79,12 @@ class Builder : public TopDownBuilder<Builder, std::vector<KdPrim>> {
       }
       if (toBelow) {
         KdPrim q = p;
-        q.box.max[a] = std::min(q.box.max[a], split);
+        q.box.max[a] = std::min(q.box.max[a], position);
         below.push_back(q);
       }
       if (toAbove) {
         KdPrim q = p;
-        q.box.min[a] = std::max(q.box.min[a], split);
+        q.box.min[a] = std::max(q.box.min[a], position);
         above.push_back(q);
       }
     }
