@@ -31,7 +31,8 @@ struct KdSettings {
   float traversalCost = 1.0f;     // SAH: cost of one traversal step ...
   float intersectionCost = 1.5f;  // ... relative to one primitive test
   float emptyBonus = 0.5f;        // SAH: a split with an empty side costs (1 - emptyBonus) times as much
-  int bins = 32;                  // binned build: candidate planes per axis: bins - 1 bin boundaries
+  int bins = 32;                  // bins per axis: bins - 1 evenly spaced candidate planes (the binned
+                                  // build's; the sweep also offers them between faces)
 };
 
 // Deepest tree the build makes (empty-space cuts included); traversal stacks

@@ -87,7 +87,9 @@ AcceleratorInfo kdtreeAccelerator() {
                              "how each plane is found: sweep = every face of every box, swept in sorted order "
                              "(Wald and Havran 2006); binned = bin boundaries and the primitives' box faces: about "
                              "twice as fast to build, trees ~3 % costlier by the SAH"),
-           ParamDecl::integer("bins", 32, 2, 64, "binned build: bins per axis (bins - 1 candidate planes between them)")},
+           ParamDecl::integer("bins", 32, 2, 64,
+                              "bins per axis: the binned build's bins - 1 evenly spaced candidate planes, which "
+                              "the sweep also offers between faces")},
           [](const ParamSet& p) -> std::unique_ptr<Accelerator> {
             a4::KdSettings s;
             s.maxDepth = p.getInt("max_depth");

@@ -23,11 +23,10 @@ class Subtree {
   }
   size_t nodeCount() const { return nodes_.size(); }
 
-  // Node `index` is a leaf holding `prims` (anything with a `.prim` id).
-  template <class Prims>
-  void setLeaf(uint32_t index, const Prims& prims) {
+  // Node `index` is a leaf holding `prims`.
+  void setLeaf(uint32_t index, const std::vector<KdPrim>& prims) {
     nodes_[index] = KdNode::leafNode(static_cast<uint32_t>(slots_.size()), static_cast<uint32_t>(prims.size()));
-    for (const auto& p : prims) slots_.push_back(p.prim);
+    for (const KdPrim& p : prims) slots_.push_back(p.prim);
   }
   // Node `index` splits at (axis, split); its below child is node index + 1 and its above child the next
   // node appended from now on. Call between building the two children.
