@@ -11,6 +11,7 @@
 #include "core/error.h"
 #include "core/markup.h"
 #include "gui/pane_labels.h"
+#include "gui/ui_scale.h"
 #include "gui/viewport.h"
 
 namespace ll::gui {
@@ -130,7 +131,7 @@ void saveAccuracyPlotSvg(const AccuracyPlot& plot, const std::string& path, int 
 }
 
 void drawAccuracyPlot(ImDrawList* dl, const AccuracyPlot& plot, float x, float y, float w, float h) {
-  const float s = ImGui::GetIO().FontGlobalScale, line = ImGui::GetTextLineHeight();
+  const float s = uiScale(), line = ImGui::GetTextLineHeight();
   dl->AddRectFilled(ImVec2(x, y), ImVec2(x + w, y + h), IM_COL32(18, 18, 22, 255));
   const std::string head = title(plot);
   dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(x + 8 * s, y + 4 * s), IM_COL32_WHITE, head.c_str(),

@@ -30,6 +30,7 @@
 #include "gui/screenshot.h"
 #include "gui/side_panel.h"
 #include "gui/slide_panel.h"
+#include "gui/ui_scale.h"
 #include "gui/viewport.h"
 #include "tasks/crash_guard.h"
 #include "tasks/task_modes.h"
@@ -115,6 +116,7 @@ void applyUiScale(AppState& app) {
   style.ScaleAllSizes(scale);
   ImGui::GetStyle() = style;
   app.appliedFontScale = scale;
+  setUiScale(scale);
 }
 
 // One frame of work that is not drawing: files, scene loads, pane renderers.

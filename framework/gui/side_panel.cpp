@@ -19,6 +19,7 @@
 #include "gui/hot_reload.h"
 #include "gui/param_widgets.h"
 #include "gui/ray_inspector.h"
+#include "gui/ui_scale.h"
 #include "gui/view_camera.h"
 #include "gui/viewport.h"
 #include "modules/registry.h"
@@ -121,12 +122,12 @@ void layoutSection(AppState& app) {
   app.compare.mode = static_cast<CompareMode>(mode);
   const char* letters[] = {"A", "B", "C", "D"};
   if (app.compare.mode != CompareMode::SideBySide) {
-    ImGui::SetNextItemWidth(60 * ImGui::GetIO().FontGlobalScale);
+    ImGui::SetNextItemWidth(uiPx(60.0f));
     ImGui::Combo("##a", &app.compare.paneA, letters, kMaxPanes);
     ImGui::SameLine();
     ImGui::Text(app.compare.mode == CompareMode::Wipe ? "left,  right" : "against");
     ImGui::SameLine();
-    ImGui::SetNextItemWidth(60 * ImGui::GetIO().FontGlobalScale);
+    ImGui::SetNextItemWidth(uiPx(60.0f));
     ImGui::Combo("##b", &app.compare.paneB, letters, kMaxPanes);
   }
   if (app.compare.mode == CompareMode::Wipe)
@@ -157,7 +158,7 @@ void layoutSection(AppState& app) {
   helpMarker(
       "Draws the nodes of each pane's accelerator at this depth (boxes, cells or spheres; leaves "
       "above it in orange).");
-  ImGui::SetNextItemWidth(80 * ImGui::GetIO().FontGlobalScale);
+  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 7.0f);  // two fields of four digits
   int size[2] = {app.width, app.height};
   if (ImGui::InputInt2("render size (0 = scene)", size, ImGuiInputTextFlags_EnterReturnsTrue)) {
     app.width = std::clamp(size[0], 0, 8192);

@@ -15,9 +15,11 @@
 #include "core/image.h"
 #include "gui/accuracy_plot.h"
 #include "gui/app_actions.h"
+#include "gui/caption_wrap.h"
 #include "gui/pane_labels.h"
 #include "gui/ray_inspector.h"
 #include "gui/structure_overlay.h"
+#include "gui/ui_scale.h"
 #include "gui/view_camera.h"
 #include "modules/registry.h"
 
@@ -62,6 +64,16 @@ ImU32 srgbColor(Rgb linear) {
   return IM_COL32(c(linear.r), c(linear.g), c(linear.b), 255);
 }
 
+// Caption `lines` wrapped to `width` pixels between their fields (caption_wrap.h);
+// ImGui's wrap, still passed when drawing, then only cuts a single over-wide word.
+std::vector<std::string> wrapCaption(const std::vector<std::string>& lines, float width) {
+  const TextWidth measure = [](std::string_view t) { return ImGui::CalcTextSize(t.data(), t.data() + t.size()).x; };
+  std::vector<std::string> wrapped;
+  for (const std::string& l : lines)
+    for (std::string& part : wrapCaptionLine(l, width, measure)) wrapped.push_back(std::move(part));
+  return wrapped;
+}
+
 enum class Anchor { Top, Bottom };  // whether y is the box's top or bottom edge
 
 // Text lines, wrapped to maxWidth, in a filled box at (x, y); the box is
@@ -69,10 +81,11 @@ enum class Anchor { Top, Bottom };  // whether y is the box's top or bottom edge
 float captionBox(std::vector<std::array<float, 4>>& overlays, ImDrawList* dl, float x, float y,
                  const std::vector<std::string>& lines, ImU32 bg, float maxWidth,
                  Anchor anchor = Anchor::Top) {
-  const float pad = 4.0f * ImGui::GetIO().FontGlobalScale;
+  const float pad = uiPx(4.0f);
   const float wrap = std::max(maxWidth - 2 * pad, 1.0f);
+  const std::vector<std::string> wrapped = wrapCaption(lines, wrap);
   float width = 0.0f, height = 2 * pad;
-  for (const std::string& l : lines) {
+  for (const std::string& l : wrapped) {
     const ImVec2 size = ImGui::CalcTextSize(l.c_str(), nullptr, false, wrap);
     width = std::max(width, size.x);
     height += size.y;
@@ -82,7 +95,7 @@ float captionBox(std::vector<std::array<float, 4>>& overlays, ImDrawList* dl, fl
   dl->AddRectFilled(ImVec2(x, y), ImVec2(x + width, y + height), bg, 3.0f);
   overlays.push_back({x, y, width, height});
   float ty = y + pad;
-  for (const std::string& l : lines) {
+  for (const std::string& l : wrapped) {
     dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(x + pad, ty), IM_COL32_WHITE,
                 l.c_str(), nullptr, wrap);
     ty += ImGui::CalcTextSize(l.c_str(), nullptr, false, wrap).y;
@@ -178,7 +191,7 @@ std::vector<std::string> paneCaption(const AppState& app, int index, const std::
       lines.push_back(phaseLine(s));
       // Where the time went, once more than the passes took it.
       if (s.phase == PaneSnapshot::Phase::Done && s.seconds - s.passSeconds > 0.05) {
-        std::snprintf(buf, sizeof buf, "time: build %.2f + preview %.2f + prepare %.2f + passes %.2f s",
+        std::snprintf(buf, sizeof buf, "time: build %.2f  + preview %.2f  + prepare %.2f  + passes %.2f s",
                       s.requestBuildSeconds, s.previewSeconds, s.prepareSeconds, s.passSeconds);
         lines.emplace_back(buf);
       }
@@ -260,16 +273,17 @@ std::string oneLine(const std::string& text, float width) {
 // The banner's lines as drawn `width` wide: folded, one line however narrow.
 std::vector<std::string> bannerLinesAt(const AppState& app, const PaneState& p, float width) {
   std::vector<std::string> lines = bannerLines(app, p);
-  if (!p.bannerOpen && lines.size() == 1) lines[0] = oneLine(lines[0], width - 8.0f * ImGui::GetIO().FontGlobalScale - 2.0f);
+  if (!p.bannerOpen && lines.size() == 1) lines[0] = oneLine(lines[0], width - uiPx(8.0f) - 2.0f);
   return lines;
 }
 
 // Height of a captionBox of `lines` wrapped to `width` (0 for no lines).
 float captionHeight(const std::vector<std::string>& lines, float width) {
   if (lines.empty()) return 0.0f;
-  const float pad = 4.0f * ImGui::GetIO().FontGlobalScale;
+  const float pad = uiPx(4.0f);
+  const float wrap = std::max(width - 2 * pad, 1.0f);
   float height = 2 * pad;
-  for (const std::string& l : lines) height += ImGui::CalcTextSize(l.c_str(), nullptr, false, std::max(width - 2 * pad, 1.0f)).y;
+  for (const std::string& l : wrapCaption(lines, wrap)) height += ImGui::CalcTextSize(l.c_str(), nullptr, false, wrap).y;
   return height + 2.0f;
 }
 
@@ -307,7 +321,7 @@ void uploadFinished(AppState& app) {
 
 // A colour bar from 0 to maxValue under the text labels 0, max/2 and max.
 void drawLegend(ImDrawList* dl, Rect r, float maxValue, bool automatic) {
-  const float barH = 14.0f * ImGui::GetIO().FontGlobalScale;
+  const float barH = uiPx(14.0f);
   const int segments = 64;
   for (int i = 0; i < segments; ++i) {
     const float t0 = static_cast<float>(i) / segments, t1 = static_cast<float>(i + 1) / segments;
@@ -337,7 +351,7 @@ void drawLightPathLabels(AppState& app, ImDrawList* dl, const PaneState& p, Rect
     if (t.share >= 0.0) lines.push_back(t.shareText());
     // The error without the class only where it fits on one line (small tiles at a projector's UI scale).
     if (t.relMseWithout >= 0.0 &&
-        ImGui::CalcTextSize(t.relMseText().c_str()).x + 4.0f + 8.0f * ImGui::GetIO().FontGlobalScale <= w)
+        ImGui::CalcTextSize(t.relMseText().c_str()).x + 4.0f + uiPx(8.0f) <= w)
       lines.push_back(t.relMseText());
     captionBox(app.overlayRects, dl, x + 2.0f, bottom - 2.0f, lines, IM_COL32(0, 0, 0, 190), w - 4.0f, Anchor::Bottom);
   }
@@ -370,7 +384,7 @@ Rect compareArea(const AppState& app, Rect area) {
   const int w = a.texture.valid() ? a.texture.width() : 1,
             h = a.texture.valid() ? a.texture.height() : 1;
   const float legend =
-      app.compare.mode == CompareMode::Difference ? 40.0f * ImGui::GetIO().FontGlobalScale : 0.0f;
+      app.compare.mode == CompareMode::Difference ? uiPx(40.0f) : 0.0f;
   const PaneState& b = app.panes[static_cast<size_t>(app.compare.paneB)];
   const float banners = app.compare.mode == CompareMode::Wipe
                             ? std::max(bannerSpace(app, a, area.w / 2), bannerSpace(app, b, area.w / 2))
@@ -551,7 +565,7 @@ void drawViewportContent(AppState& app, float x, float y, float w, float h) {
       if (current) drawLightPathLabels(app, dl, p, r);
       app.paneRects[static_cast<size_t>(i)] = {r.x, r.y, r.w, r.h};
       const float lh = current && p.texture.legendMax() > 0.0f
-                           ? 34.0f * ImGui::GetIO().FontGlobalScale
+                           ? uiPx(34.0f)
                            : 0.0f;
       if (lh > 0.0f) {
         dl->AddRectFilled(ImVec2(r.x, r.y + r.h - lh), ImVec2(r.x + r.w, r.y + r.h),
@@ -592,7 +606,7 @@ void drawViewportContent(AppState& app, float x, float y, float w, float h) {
       dl->AddImage(b.texture.imguiId(), ImVec2(sx, r.y), ImVec2(r.x + r.w, r.y + r.h),
                    ImVec2(split, 0), ImVec2(1, 1));
     dl->AddLine(ImVec2(sx, r.y), ImVec2(sx, r.y + r.h), IM_COL32(255, 255, 255, 230), 2.0f);
-    const float handle = 7.0f * ImGui::GetIO().FontGlobalScale;
+    const float handle = uiPx(7.0f);
     dl->AddCircleFilled(ImVec2(sx, r.y + r.h / 2), handle, IM_COL32_WHITE);
     app.overlayRects.push_back({sx - handle - 1, r.y, 2 * handle + 2, r.h});
     app.paneRects[static_cast<size_t>(ia)] = {r.x, r.y, sx - r.x, r.h};
@@ -648,7 +662,7 @@ void handleCameraInput(AppState& app, GLFWwindow* window, float x, float y, floa
       if (app.compare.mode == CompareMode::Wipe && ImGui::IsMouseClicked(0)) {
         const auto& cr = app.compareRect;
         const float sx = cr[0] + cr[2] * app.compare.wipe;
-        app.draggingWipe = cr[2] > 0 && std::abs(io.MousePos.x - sx) < 10.0f * io.FontGlobalScale;
+        app.draggingWipe = cr[2] > 0 && std::abs(io.MousePos.x - sx) < uiPx(10.0f);
       }
     }
     const float cellH = std::max(app.paneCount == 4 ? h / 2 : h, 1.0f);
