@@ -12,10 +12,16 @@
 //     --benchmark_min_time=0.2 --benchmark_format=json > accel.json
 //   python3 tests/bench/accel_ratios.py accel.json    # ratios to Embree, median of pairs
 //
+// Ratios near a target: the Accel/paired benchmarks time an accelerator and Embree
+// taking turns on the same path rays (see tracePaired), e.g.
+//   --benchmark_filter='Accel/paired/closest/cornell235k/path/bvh-sah' --benchmark_repetitions=5
+//
 // The scenes, ray sets and built accelerators are made once, outside the timing.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -99,6 +105,13 @@ const std::vector<BenchAccel>& benchAccels() {
     return a;
   }();
   return kAccels;
+}
+
+// The yardstick: Embree with its own defaults (null without Embree).
+const BenchAccel* embreeDefaults() {
+  for (const BenchAccel& a : benchAccels())
+    if (std::string(a.label) == "embree") return &a;
+  return nullptr;
 }
 
 const Scene& scene(const BenchScene& s) {
@@ -243,6 +256,45 @@ void trace(benchmark::State& state, const BenchScene& s, const BenchAccel& a, Ra
   state.counters["prims/ray"] = static_cast<double>(prims.load()) / queries;
 }
 
+// Accel/paired/...: `a` and the yardstick on the same path rays, one thread,
+// taking turns every kPairChunk rays (who goes first alternates) and timed
+// chunk by chunk. A noisy neighbour on a shared machine then slows both
+// alike, where separate benchmarks seconds apart can put one run's ratio
+// 10-20 % off. Counters: `ratio` = the yardstick's time over a's (a's
+// throughput relative to the yardstick's), and both rates in Mrays/s.
+constexpr size_t kPairChunk = 16384;  // rays per turn: a few milliseconds
+
+void tracePaired(benchmark::State& state, const BenchScene& s, const BenchAccel& a, const BenchAccel& yardstick,
+                 bool anyHit) {
+  const Accelerator& mine = accelerator(s, a);
+  const Accelerator& theirs = accelerator(s, yardstick);
+  const std::vector<Ray>& rs = raySet(s, RaySet::Path, anyHit);
+  const auto seconds = [&](const Accelerator& accel, size_t begin, size_t end) {
+    const auto start = std::chrono::steady_clock::now();
+    QueryCounters counters;
+    uint64_t local = 0;
+    for (size_t i = begin; i != end; ++i) {
+      Hit h;
+      local += anyHit ? accel.occluded(rs[i], counters) : accel.intersect(rs[i], h, counters);
+    }
+    benchmark::DoNotOptimize(local);
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+  double mineSeconds = 0.0, theirSeconds = 0.0;
+  bool mineFirst = true;
+  for (auto _ : state)
+    for (size_t begin = 0; begin < rs.size(); begin += kPairChunk, mineFirst = !mineFirst) {
+      const size_t end = std::min(begin + kPairChunk, rs.size());
+      if (mineFirst) mineSeconds += seconds(mine, begin, end);
+      theirSeconds += seconds(theirs, begin, end);
+      if (!mineFirst) mineSeconds += seconds(mine, begin, end);
+    }
+  const double rays = static_cast<double>(rs.size()) * static_cast<double>(state.iterations());
+  state.counters["ratio"] = theirSeconds / mineSeconds;
+  state.counters["Mrays/s"] = rays * 1e-6 / mineSeconds;
+  state.counters[std::string(yardstick.label) + " Mrays/s"] = rays * 1e-6 / theirSeconds;
+}
+
 void build(benchmark::State& state, const BenchScene& s, const BenchAccel& a) {
   const Geometry& g = scene(s).geometry;
   const AcceleratorInfo& info = findAccelerator(a.name);
@@ -255,8 +307,9 @@ void build(benchmark::State& state, const BenchScene& s, const BenchAccel& a) {
                                                   benchmark::Counter::kIsIterationInvariantRate);
 }
 
-// Registers Accel/<closest|anyhit>/<scene>/<coherent|incoherent|path>/<accel>[/t2] and
-// Accel/build/<scene>/<accel>. `path` rays (closest: camera and bounce rays; anyhit: shadow rays) only on the
+// Registers Accel/<closest|anyhit>/<scene>/<coherent|incoherent|path>/<accel>[/t2],
+// Accel/paired/<closest|anyhit>/<scene>/path/<accel> and Accel/build/<scene>/<accel>.
+// `path` rays (closest: camera and bounce rays; anyhit: shadow rays) only on the
 // scenes a path tracer lights: the Cornell box with the bunny.
 const bool kRegistered = [] {
   for (const BenchScene& s : benchScenes())
@@ -276,6 +329,14 @@ const bool kRegistered = [] {
               trace(st, s, a, set, false, 2);
             })->Unit(benchmark::kMillisecond)->UseRealTime();
         }
+      const BenchAccel* yardstick = embreeDefaults();
+      if (lit && yardstick && yardstick != &a)
+        for (bool anyHit : {false, true})
+          benchmark::RegisterBenchmark(
+              (std::string("Accel/paired/") + (anyHit ? "anyhit/" : "closest/") + s.name + "/path/" + a.label).c_str(),
+              [&s, &a, yardstick, anyHit](benchmark::State& st) { tracePaired(st, s, a, *yardstick, anyHit); })
+              ->Unit(benchmark::kMillisecond)
+              ->UseRealTime();
       benchmark::RegisterBenchmark((std::string("Accel/build/") + s.name + "/" + a.label).c_str(),
                                    [&s, &a](benchmark::State& st) { build(st, s, a); })
           ->Unit(benchmark::kMillisecond)
