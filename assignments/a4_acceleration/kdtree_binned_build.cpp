@@ -14,7 +14,10 @@
 // number of threads, and the same as the first, serial version made.
 #include <algorithm>
 #include <array>
+#include <cstddef>
 #include <vector>
+
+#include <emmintrin.h>  // SSE2 (x86-64 baseline): the three axes' bins at once
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>
@@ -26,6 +29,9 @@
 namespace ll::a4::kdbuild {
 
 namespace {
+
+// countBins loads a box's max corner as four floats: the fourth is `prim`, still inside the KdPrim.
+static_assert(offsetof(KdPrim, box) + sizeof(Bounds3) + sizeof(float) <= sizeof(KdPrim));
 
 // Where a node's boxes start and end, per axis: bin counts and the faces of their box.
 struct BinCounts {
@@ -101,24 +107,37 @@ class Builder : public TopDownBuilder<Builder, std::vector<KdPrim>> {
 
   // Counts, in one pass, where the boxes of prims[0, count) start and end:
   // bin b of axis a spans [lo + b / scale, lo + (b + 1) / scale) (the last
-  // bin reaches on). Clamped as a float before the conversion: (x - lo) *
-  // scale is 0 * inf = NaN in a cell thinner than float resolution, and
-  // beyond int's range for far boxes (both undefined as an int).
+  // bin reaches on). The three axes' bins at once, in SSE lanes: (x - lo) *
+  // scale, clamped as a float before the conversion -- a NaN (0 * inf, in a
+  // cell thinner than float resolution) to bin 0 and anything beyond int's
+  // range (far boxes) to the last bin, where the conversion is undefined.
   void countBins(const KdPrim* prims, size_t count, const Vec3& lo, const Vec3& scale, BinCounts& c) const {
-    const float lastBin = static_cast<float>(sh_.bins - 1);
-    const auto binOf = [&](float x, int a) {
-      const float f = (x - lo[a]) * scale[a];
-      return f >= lastBin ? static_cast<size_t>(lastBin) : f > 0.0f ? static_cast<size_t>(f) : 0;
+    const __m128 lo4 = _mm_setr_ps(lo.x, lo.y, lo.z, 0.0f), scale4 = _mm_setr_ps(scale.x, scale.y, scale.z, 0.0f);
+    const __m128 zero = _mm_setzero_ps(), lastBin = _mm_set1_ps(static_cast<float>(sh_.bins - 1));
+    // max_ps returns its second operand when either is NaN: a NaN goes to bin 0.
+    const auto binsOf = [&](__m128 x) {
+      return _mm_cvttps_epi32(_mm_min_ps(_mm_max_ps(_mm_mul_ps(_mm_sub_ps(x, lo4), scale4), zero), lastBin));
     };
+    __m128 first = _mm_set1_ps(kInfinity), last = _mm_set1_ps(-kInfinity);
+    alignas(16) int32_t s[4], e[4];
     for (size_t i = 0; i < count; ++i) {
-      const Bounds3& box = prims[i].box;
-      for (int a = 0; a < 3; ++a) {
-        ++c.starts[static_cast<size_t>(a)][binOf(box.min[a], a)];
-        ++c.ends[static_cast<size_t>(a)][binOf(box.max[a], a)];
+      // Lanes 0-2 are the box's min (max); lane 3 is the next field's bits, never used. Both loads stay
+      // inside the KdPrim (box.max is followed by prim).
+      const __m128 boxMin = _mm_loadu_ps(&prims[i].box.min.x), boxMax = _mm_loadu_ps(&prims[i].box.max.x);
+      _mm_store_si128(reinterpret_cast<__m128i*>(s), binsOf(boxMin));
+      _mm_store_si128(reinterpret_cast<__m128i*>(e), binsOf(boxMax));
+      for (size_t a = 0; a < 3; ++a) {
+        ++c.starts[a][static_cast<size_t>(s[a])];
+        ++c.ends[a][static_cast<size_t>(e[a])];
       }
-      c.first = glm::min(c.first, box.min);
-      c.last = glm::max(c.last, box.max);
+      first = _mm_min_ps(first, boxMin);
+      last = _mm_max_ps(last, boxMax);
     }
+    alignas(16) float f[4], l[4];
+    _mm_store_ps(f, first);
+    _mm_store_ps(l, last);
+    c.first = glm::min(c.first, Vec3(f[0], f[1], f[2]));
+    c.last = glm::max(c.last, Vec3(l[0], l[1], l[2]));
   }
 
   // The cheapest bin boundary over all three axes: counts of boxes starting
