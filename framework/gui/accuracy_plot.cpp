@@ -72,7 +72,7 @@ std::string errorTick(int decade) { return "1e" + std::to_string(decade); }
 
 std::string title(const AccuracyPlot& plot) {
   if (plot.reference < 0) return "Cost of accuracy: choose a reference pane (Compare: error against)";
-  return "Error (relMSE) against " + plot.referenceLabel + ", over wall time";
+  return "Error (relMSE) against " + plot.referenceLabel + ",  over wall time";  // (two spaces: wrapped there)
 }
 
 }  // namespace
@@ -133,11 +133,14 @@ void saveAccuracyPlotSvg(const AccuracyPlot& plot, const std::string& path, int 
 void drawAccuracyPlot(ImDrawList* dl, const AccuracyPlot& plot, float x, float y, float w, float h) {
   const float s = uiScale(), line = ImGui::GetTextLineHeight();
   dl->AddRectFilled(ImVec2(x, y), ImVec2(x + w, y + h), IM_COL32(18, 18, 22, 255));
-  const std::string head = title(plot);
-  dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(x + 8 * s, y + 4 * s), IM_COL32_WHITE, head.c_str(),
-              nullptr, w - 16 * s);
+  float headHeight = 0.0f;
+  for (const std::string& l : wrapCaption({title(plot)}, w - 16 * s)) {
+    dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(x + 8 * s, y + 4 * s + headHeight), IM_COL32_WHITE,
+                l.c_str(), nullptr, w - 16 * s);
+    headHeight += ImGui::CalcTextSize(l.c_str(), nullptr, false, w - 16 * s).y;
+  }
   const float left = x + ImGui::CalcTextSize("1e-10").x + 14 * s, right = x + w - 10 * s;
-  const float top = y + ImGui::CalcTextSize(head.c_str(), nullptr, false, w - 16 * s).y + 10 * s;
+  const float top = y + headHeight + 10 * s;
   const float bottom = y + h - 2 * line - 8 * s;
   if (right - left < 20 || bottom - top < 20) return;
   const auto px = [&](double lx) { return left + static_cast<float>((lx - plot.x0) / (plot.x1 - plot.x0)) * (right - left); };

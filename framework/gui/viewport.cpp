@@ -64,16 +64,6 @@ ImU32 srgbColor(Rgb linear) {
   return IM_COL32(c(linear.r), c(linear.g), c(linear.b), 255);
 }
 
-// Caption `lines` wrapped to `width` pixels between their fields (caption_wrap.h);
-// ImGui's wrap, still passed when drawing, then only cuts a single over-wide word.
-std::vector<std::string> wrapCaption(const std::vector<std::string>& lines, float width) {
-  const TextWidth measure = [](std::string_view t) { return ImGui::CalcTextSize(t.data(), t.data() + t.size()).x; };
-  std::vector<std::string> wrapped;
-  for (const std::string& l : lines)
-    for (std::string& part : wrapCaptionLine(l, width, measure)) wrapped.push_back(std::move(part));
-  return wrapped;
-}
-
 enum class Anchor { Top, Bottom };  // whether y is the box's top or bottom edge
 
 // Text lines, wrapped to maxWidth, in a filled box at (x, y); the box is
@@ -634,11 +624,15 @@ void drawViewportContent(AppState& app, float x, float y, float w, float h) {
     drawLegend(dl, {r.x, r.y + r.h + 6.0f, r.w, 30.0f}, app.diff.usedMax,
                app.diff.requestedMax <= 0);
   }
-  char title[200];
-  std::snprintf(title, sizeof title, "%s error of %c (%s) against %c (%s)",
-                app.compare.diff == DiffMode::Absolute ? "absolute" : "relative", paneLetter(ia),
-                a.technique.c_str(), paneLetter(ib), b.technique.c_str());
-  std::vector<std::string> lines{title};
+  // Each pane named by what tells it apart ("bvh", "path, 64 spp"; pane_labels.h), not always the technique:
+  // "A (raycast) against B (raycast)" said nothing when the panes differ in their accelerator.
+  const auto named = [&](int i, const PaneState& p) {
+    std::string what = static_cast<size_t>(i) < labels.size() ? labels[static_cast<size_t>(i)].substr(3) : p.technique;
+    for (size_t at = what.find("  "); at != std::string::npos; at = what.find("  ", at)) what.replace(at, 2, ", ");
+    return std::string(1, paneLetter(i)) + " (" + what + ")";
+  };
+  std::vector<std::string> lines{std::string(app.compare.diff == DiffMode::Absolute ? "absolute" : "relative") +
+                                 " error of " + named(ia, a) + "  against " + named(ib, b)};
   if (!diffCurrent) lines.emplace_back("waiting for both images...");
   captionBox(app.overlayRects, dl, r.x, r.y, lines, IM_COL32(0, 0, 0, 170), r.w);
 }
@@ -721,6 +715,14 @@ void handleCameraInput(AppState& app, GLFWwindow* window, float x, float y, floa
       app.cameraChanged = true;
     }
   }
+}
+
+std::vector<std::string> wrapCaption(const std::vector<std::string>& lines, float width) {
+  const TextWidth measure = [](std::string_view t) { return ImGui::CalcTextSize(t.data(), t.data() + t.size()).x; };
+  std::vector<std::string> wrapped;
+  for (const std::string& l : lines)
+    for (std::string& part : wrapCaptionLine(l, width, measure)) wrapped.push_back(std::move(part));
+  return wrapped;
 }
 
 }  // namespace ll::gui

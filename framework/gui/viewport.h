@@ -4,6 +4,9 @@
 // only when ImGui does not want the mouse or keyboard.
 #pragma once
 
+#include <string>
+#include <vector>
+
 #include "gui/app_state.h"
 
 struct GLFWwindow;
@@ -21,6 +24,11 @@ void handleCameraInput(AppState& app, GLFWwindow* window, float x, float y, floa
 // Whether the pane's texture shows an image of its current technique (or
 // cost view): false from a switch until the new technique's first image.
 bool imageOnScreen(const PaneState& p);
+
+// Caption `lines` wrapped to `width` pixels in the current ImGui font,
+// between their fields (caption_wrap.h). Draw them with ImGui's wrap at
+// the same width too: it then only cuts a single word wider than a line.
+std::vector<std::string> wrapCaption(const std::vector<std::string>& lines, float width);
 
 // One-letter pane names used everywhere in the GUI: A, B, C, D.
 inline char paneLetter(int pane) {
