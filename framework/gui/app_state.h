@@ -157,7 +157,7 @@ struct AppState {
   PresenterState presenter;    // --slides: the deck and the slide on screen
   float uiScale = 1.0f;        // user's scale, times the monitor's content scale
   float contentScale = 1.0f;
-  float appliedFontScale = 0.0f;
+  float appliedFontScale = 0.0f;  // the scale the fonts were built at (0: not yet); sizes use uiPx() (ui_scale.h)
   FrameTimes uiFrameWork;
   bool fullscreen = false;
   bool toggleFullscreenRequest = false;  // set by the F11 key callback

@@ -292,7 +292,7 @@ int runGui(const GuiOptions& options) {
       const bool slide = app.presenter.active() && !app.presenter.showControls;
       const float panelW = app.panelHidden ? 0.0f
                            : slide         ? io.DisplaySize.x * kSlidePanelFraction
-                                           : std::min(kPanelWidth * app.appliedFontScale, io.DisplaySize.x * 0.5f);
+                                           : std::min(uiPx(kPanelWidth), io.DisplaySize.x * 0.5f);
       if (app.panelHidden)
         app.widgetRects.clear();  // no panel drawn: no controls to find
       else if (slide)

@@ -227,6 +227,17 @@ const std::vector<Ray>& raySet(const BenchScene& s, RaySet set, bool anyHit) {
   return anyHit ? pathRays(s).shadow : pathRays(s).closest;
 }
 
+// Traces rays[begin, end) through `accel` (any hit or closest hit), adding to `counters`.
+void traceRange(const Accelerator& accel, const std::vector<Ray>& rays, size_t begin, size_t end, bool anyHit,
+                QueryCounters& counters) {
+  uint64_t local = 0;
+  for (size_t i = begin; i != end; ++i) {
+    Hit h;
+    local += anyHit ? accel.occluded(rays[i], counters) : accel.intersect(rays[i], h, counters);
+  }
+  benchmark::DoNotOptimize(local);
+}
+
 void trace(benchmark::State& state, const BenchScene& s, const BenchAccel& a, RaySet set, bool anyHit,
            int threads) {
   const Accelerator& accel = accelerator(s, a);
@@ -237,12 +248,7 @@ void trace(benchmark::State& state, const BenchScene& s, const BenchAccel& a, Ra
     arena.execute([&] {
       tbb::parallel_for(tbb::blocked_range<size_t>(0, rs.size(), 1024), [&](const tbb::blocked_range<size_t>& range) {
         QueryCounters counters;
-        uint64_t local = 0;
-        for (size_t i = range.begin(); i != range.end(); ++i) {
-          Hit h;
-          local += anyHit ? accel.occluded(rs[i], counters) : accel.intersect(rs[i], h, counters);
-        }
-        benchmark::DoNotOptimize(local);
+        traceRange(accel, rs, range.begin(), range.end(), anyHit, counters);
         nodes += counters.nodesVisited;
         prims += counters.primitivesTested;
       });
@@ -272,12 +278,7 @@ void tracePaired(benchmark::State& state, const BenchScene& s, const BenchAccel&
   const auto seconds = [&](const Accelerator& accel, size_t begin, size_t end) {
     const auto start = std::chrono::steady_clock::now();
     QueryCounters counters;
-    uint64_t local = 0;
-    for (size_t i = begin; i != end; ++i) {
-      Hit h;
-      local += anyHit ? accel.occluded(rs[i], counters) : accel.intersect(rs[i], h, counters);
-    }
-    benchmark::DoNotOptimize(local);
+    traceRange(accel, rs, begin, end, anyHit, counters);
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
   double mineSeconds = 0.0, theirSeconds = 0.0;
