@@ -1,9 +1,11 @@
 // Every preset named in every deck under slides/ loads and renders headless
 // (tiny: 40 pixels wide, one pass): a finite, non-uniform picture, and in the
-// solution build no student stub ran; every slide has speaker notes. One test per deck.
+// solution build no student stub ran; every slide has speaker notes; code lines
+// fit the presenter's slide panel. One test per deck.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <sstream>
 
 #include <gtest/gtest.h>
 
@@ -63,6 +65,35 @@ TEST_P(SlideDeck, EverySlideHasSpeakerNotes) {
   for (const Slide& slide : deck.slides) {
     SCOPED_TRACE(path.string() + " (" + slide.anchor + ")");
     EXPECT_GE(slide.notes.size(), 120u) << "no speaker notes (a `Note:` line and what follows it)";
+  }
+}
+
+// Code on a slide is read from the back of the hall: presenter mode shrinks a
+// code block to at most 0.75 of its size to fit the slide panel, then scrolls it
+// sideways, hiding the ends of its lines. At 1600x900 and UI scale 2 (a small
+// projector at the lecture-hall setting) the panel shows 47 columns at 0.75,
+// one less when the slide scrolls; so no line of a code block is longer than 46.
+TEST_P(SlideDeck, EveryCodeLineFitsThePresenterPanel) {
+  constexpr size_t kColumns = 46;
+  const fs::path path = (fs::path(LIGHTLAB_DATA_DIR) / ".." / "slides" / (GetParam() + ".md")).lexically_normal();
+  const Deck deck = loadDeck(path.string());
+  for (const Slide& slide : deck.slides) {
+    std::istringstream in(slide.markdown);
+    std::string line;
+    bool code = false;
+    for (int n = 0; std::getline(in, line); ++n) {
+      if (line.rfind("```", 0) == 0) {
+        code = !code;
+        continue;
+      }
+      // Columns are code points: count the bytes that do not continue a UTF-8 sequence.
+      const auto columns = static_cast<size_t>(
+          std::count_if(line.begin(), line.end(), [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; }));
+      if (code) {
+        EXPECT_LE(columns, kColumns) << path.string() << " (" << slide.anchor << "), line " << n + 1
+                                     << " of the slide: " << line;
+      }
+    }
   }
 }
 

@@ -103,7 +103,9 @@ void drawCode(const PresenterState& p, const std::string& code, int id, float le
   const ImGuiStyle& style = ImGui::GetStyle();
   const ImVec2 size = ImGui::CalcTextSize(text.c_str());
   const float inner = width - style.WindowPadding.x * 2.0f;
-  const float scale = size.x > inner ? std::max(0.75f, inner / size.x) : 1.0f;
+  // (1 % to spare: the glyphs' advances, scaled and rounded, can add up to a pixel or two more than
+  // size.x * scale, which would show a scrollbar for nothing.)
+  const float scale = size.x > inner ? std::max(0.75f, 0.99f * inner / size.x) : 1.0f;
   const bool scrolls = size.x * scale > inner;
   const float height = size.y * scale + style.WindowPadding.y * 2.0f + (scrolls ? style.ScrollbarSize : 0.0f);
   ImGui::SetCursorPosX(left);
@@ -145,9 +147,8 @@ void drawBlocks(AppState& app, const std::vector<TextBlock>& blocks, float width
         drawSpans(p, b.spans, body, kText, left, base + width);
         break;
       }
-      case BlockKind::Code:
-        for (const TextSpan& s : b.spans)
-          drawCode(p, s.text, ++codeBlock, base + indentStep, std::max(width - indentStep, 50.0f));
+      case BlockKind::Code:  // the panel's whole width: code lines are long, and indenting them costs columns
+        for (const TextSpan& s : b.spans) drawCode(p, s.text, ++codeBlock, base, std::max(width, 50.0f));
         break;
       case BlockKind::DisplayMath:
         ImGui::Spacing();

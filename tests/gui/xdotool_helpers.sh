@@ -11,6 +11,7 @@
 #   open_combo NAME WIDGET  click a combo until its list shows (three tries)
 #   click_until NAME WIDGET FRACTION COND  click the widget until COND holds (three clicks, 30 s each)
 #   pick_until NAME COMBO ITEM COND  click ITEM in COMBO's open list until COND holds (three clicks, 40 s each)
+#   state NAME              the panes' techniques, starts and phases and the open lists, from NAME.json
 #   $done_both              both panes finished all passes of their last submit, and the pixels
 #                           on screen are their last image (display bytes are encoded in the
 #                           background, so the sidecar's phase can run ahead of the texture; a
@@ -41,6 +42,9 @@ until_shot() {
     sleep 0.3
   done
 }
+# state NAME: what a failure message needs from NAME.json -- each pane's technique, render starts
+# and phase, and the lists open -- so that a failure on a loaded CI machine can be read afterwards.
+state() { q "$1.json" "'panes ' + str([(p['technique'], p['starts'], p['phase']) for p in j['panes']]) + ', open lists ' + str([k for k in j['widgets'] if k.endswith('.list')])"; }
 key() { xdotool mousemove 5 5 key "$1"; }
 done_both="all(p['request_current'] and p['phase'] == 'done' and p['passes'] == p['total_passes'] and p['on_screen_version'] == p['image_version'] for p in j['panes'][:2])"
 # reveal NAME WIDGET [BOX]: screenshots until WIDGET lies wholly inside BOX (a
@@ -97,7 +101,7 @@ click_until() {
       sleep 0.3
     done
   done
-  fail "$1: never true after three clicks on '$2': $4"
+  fail "$1: never true after three clicks on '$2': $4 (then: $(state "$1"))"
 }
 # pick_until NAME COMBO ITEM COND: click ITEM in COMBO's open list, then screenshots until COND holds (kept
 # as NAME.*); a click that no frame took up on a loaded machine is made again, the list reopened if it
@@ -117,5 +121,5 @@ pick_until() {
       sleep 0.3
     done
   done
-  fail "$1: never true after three clicks on '$3': $4"
+  fail "$1: never true after three clicks on '$3': $4 (then: $(state "$1"))"
 }

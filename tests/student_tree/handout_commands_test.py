@@ -3,7 +3,9 @@
 
 Takes each line of the ```sh blocks of assignments/*/README.md (and of the
 student workflow section of README.md), runs it with bash from the tree's root,
-and fails on a non-zero exit. A command that runs GoogleTest must run at least
+and fails on a non-zero exit, or when its picture carries the stripes of another
+assignment's stubs (an A4 command striped by A2's stubs: the handout should add
+`--reference A2`; the tree is fresh, so every stub is still there). A command that runs GoogleTest must run at least
 one test (in a fresh student tree the task tests fail -- the stubs -- so there
 the exit status of a test command is not judged, only that it ran tests and
 did not crash). A `gui` command runs under Xvfb and takes one screenshot.
@@ -48,6 +50,7 @@ def main():
     failures, ran = [], 0
     for handout in handouts:
         rel = os.path.relpath(handout, tree)
+        assignment = "A" + re.match(r"a(\d)_", os.path.basename(os.path.dirname(handout))).group(1)
         for line, command in commands(handout):
             words = shlex.split(command, comments=True)
             if not words:
@@ -78,8 +81,13 @@ def main():
                 else:
                     print(f"ok ({time.time() - start:.0f} s, {max(counts)} tests): {shown}")
                 continue
+            # "lightlab: A2.1 not implemented: ... -- its reference stood in; those pixels are striped magenta"
+            foreign = sorted({m for m in re.findall(r"(A\d)\.\d+ not implemented: .*striped", out) if m != assignment})
             if p.returncode != 0:
                 failures.append(f"{shown}\n    exit {p.returncode}:\n      " + "\n      ".join(out.strip().splitlines()[-8:]))
+            elif foreign:
+                failures.append(f"{shown}\n    its picture is striped by the stubs of " + ", ".join(foreign) +
+                                " (add --reference " + ",".join(foreign) + " before the subcommand)")
             else:
                 print(f"ok ({time.time() - start:.0f} s): {shown}")
     if failures:
