@@ -1,5 +1,7 @@
 #include "grading/grade_reports.h"
 
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 
@@ -86,6 +88,51 @@ TEST(GradeReports, GradescopeJUnitAndHtmlAgreeWithTheScores) {
   EXPECT_TRUE(fs::exists(dir / "missing" / "junit.xml"));
   EXPECT_THROW(writeJUnitReport(r, (dir / "report.html" / "junit.xml").string()), UserError);
   fs::remove_all(dir);
+}
+
+std::string textReport(const GradeResult& r) {
+  char* buffer = nullptr;
+  size_t size = 0;
+  std::FILE* f = open_memstream(&buffer, &size);
+  writeTextReport(r, f, false, "");
+  std::fclose(f);
+  std::string text(buffer, size);
+  std::free(buffer);
+  return text;
+}
+
+// What a student reads first: a task that is still the stub takes one line, not
+// one per check; a partly written one names each check its stub ran in, once;
+// optional points are shown apart from the assignment's.
+TEST(GradeReports, TheTextReportSaysAStubOnceAndShowsOptionalPointsApart) {
+  GradeResult r;
+  r.assignment = "A9";
+  r.title = "Sample";
+  TaskResult stub{"A9.1", "stub", 40.0, false, 0.0, Status::Error, {}, "a9/stub.cpp", "f, g"};
+  stub.tests = {test("A9.1", Status::NotImplemented, 1.0, "A9.1 not implemented: its stub ran in T.One"),
+                test("A9.1", Status::NotImplemented, 1.0, "A9.1 not implemented: its stub ran in T.Two"),
+                test("A9.1", Status::NotImplemented, 1.0,
+                     "A9.1 not implemented: complexity check not run, the stub ran in an earlier one")};
+  TaskResult half{"A9.2", "half", 60.0, false, 0.0, Status::Error, {}, "a9/half.cpp", "h"};
+  half.tests = {test("A9.2", Status::Passed, 1.0),
+                test("A9.2", Status::NotImplemented, 1.0, "A9.2 not implemented: its stub ran in T.Three")};
+  TaskResult extra{"A9.3", "extra", 20.0, true, 0.0, Status::Error, {}, "a9/extra.cpp", "k"};
+  extra.tests = {test("A9.3", Status::Passed, 1.0)};
+  r.tasks = {stub, half, extra};
+  finalizeScores(r);
+  const std::string text = textReport(r);
+  EXPECT_NE(text.find("A9 Sample: 0 / 100 points + 20 / 20 optional (seed"), std::string::npos) << text;
+  EXPECT_NE(text.find("  not implemented  still the stub (all 3 checks): write f, g, then delete the LIGHTLAB_TODO "
+                      "lines\n"),
+            std::string::npos)
+      << text;
+  EXPECT_EQ(text.find("T.One"), std::string::npos) << text;
+  EXPECT_NE(text.find("  not implemented its stub ran in T.Three\n"), std::string::npos) << text;
+  EXPECT_EQ(text.find("not implemented A9.2 not implemented"), std::string::npos) << text;
+
+  r.tasks = {extra};  // only the optional task graded (--task A9.3)
+  finalizeScores(r);
+  EXPECT_NE(textReport(r).find("A9 Sample: 20 / 20 optional points (seed"), std::string::npos) << textReport(r);
 }
 
 TEST(GradingSpec, EveryAssignmentsSpecLoadsWithItsReferences) {

@@ -181,7 +181,9 @@ class Grader {
         if (!blocked.empty()) tests = {notRun(t, s, blocked, Status::Error)};
         else if (budgetLeft() <= 0.0) tests = {notRun(t, s, "not run: the grading time budget of " +
                                                               fmt(o_.budgetSeconds) + " s ran out", Status::Error)};
-        else if (notImplemented && s.kind != "unit") tests = {notRun(t, s, t.id + " not implemented", Status::NotImplemented)};
+        else if (notImplemented && s.kind != "unit")
+          tests = {notRun(t, s, t.id + " not implemented: " + s.kind + " check not run, the stub ran in an earlier one",
+                          Status::NotImplemented)};
         else if (s.kind == "unit") tests = unit(t, s);
         else if (s.kind == "image") tests = {image(t, s)};
         else tests = {complexity(t, s)};
