@@ -107,21 +107,8 @@ void finalizeScores(GradeResult& result) {
 
 void writeTextReport(const GradeResult& result, std::FILE* out, bool colour, const std::string& reportPath) {
   const std::string bold = colour ? "\x1b[1m" : "", reset = colour ? "\x1b[0m" : "";
-  // Optional tasks are extra credit: their points are shown apart ("0 / 160 points + 0 / 20 optional"),
-  // and alone when only optional tasks were graded (not "0 / 0 points").
-  double optionalScore = 0.0, optionalPoints = 0.0;
-  for (const TaskResult& task : result.tasks)
-    if (task.optional) {
-      optionalScore += task.score;
-      optionalPoints += task.points;
-    }
-  std::string total;
-  if (result.maxScore > 0.0 || optionalPoints == 0.0)
-    total = formatNumber(result.score - optionalScore) + " / " + formatNumber(result.maxScore) + " points";
-  if (optionalPoints > 0.0)
-    total += (total.empty() ? "" : " + ") + formatNumber(optionalScore) + " / " + formatNumber(optionalPoints) +
-             (total.empty() ? " optional points" : " optional");
-  std::fprintf(out, "%s%s: %s%s (seed %u, %s s)\n", bold.c_str(), assignmentName(result).c_str(), total.c_str(),
+  std::fprintf(out, "%s%s: %s%s (seed %u, %s s)\n", bold.c_str(), assignmentName(result).c_str(),
+               pointsSummary(result).c_str(),
                reset.c_str(), result.seed, formatFixed(result.seconds, 1).c_str());
 
   size_t idWidth = 0, titleWidth = 0, scoreWidth = 0;
@@ -146,14 +133,9 @@ void writeTextReport(const GradeResult& result, std::FILE* out, bool colour, con
     if (!task.file.empty())
       std::fprintf(out, "  look at: %s (%s)\n", task.file.c_str(), task.functions.c_str());
     if (task.tests.empty()) std::fputs("  (no tests)\n", out);
-    // Still the stub everywhere: one line, not one per test that ran it.
-    if (!task.tests.empty() && std::all_of(task.tests.begin(), task.tests.end(), [](const TestResult& t) {
-          return t.status == Status::NotImplemented;
-        })) {
-      const std::string what = task.functions.empty() ? std::string("your code") : task.functions;
-      std::fprintf(out, "  %s  still the stub (all %zu checks): write %s, then delete the LIGHTLAB_TODO lines\n",
-                   coloured(statusName(Status::NotImplemented), Status::NotImplemented, colour).c_str(),
-                   task.tests.size(), what.c_str());
+    if (stillTheStub(task)) {  // one line, not one per check that ran the stub
+      std::fprintf(out, "  %s  %s\n", coloured(statusName(Status::NotImplemented), Status::NotImplemented, colour).c_str(),
+                   stubAdvice(task).c_str());
       continue;
     }
     // A stub (or a module that does not load) fails every test alike: said once, with a count.
@@ -173,10 +155,7 @@ void writeTextReport(const GradeResult& result, std::FILE* out, bool colour, con
         std::fprintf(out, "  ... and %zu more (see the report)\n", shown.size() - 8);
         break;
       }
-      std::string message = t->message.empty() ? t->name : t->message;
-      // "not implemented  A4.5 not implemented: its stub ran in ..." says it twice.
-      const std::string echo = task.id + " not implemented: ";
-      if (t->status == Status::NotImplemented && message.rfind(echo, 0) == 0) message.erase(0, echo.size());
+      std::string message = shownMessage(task, *t);
       if (count > 1) message += " (" + std::to_string(count) + " tests)";
       std::fprintf(out, "  %s %s\n", coloured(statusName(t->status), t->status, colour).c_str(), message.c_str());
       // The details, indented, at most 40 lines per check.

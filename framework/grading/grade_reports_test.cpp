@@ -130,6 +130,19 @@ TEST(GradeReports, TheTextReportSaysAStubOnceAndShowsOptionalPointsApart) {
   EXPECT_NE(text.find("  not implemented its stub ran in T.Three\n"), std::string::npos) << text;
   EXPECT_EQ(text.find("not implemented A9.2 not implemented"), std::string::npos) << text;
 
+  // The HTML report says the same: one card for the stub, the file to open, optional points apart.
+  const fs::path dir = fs::temp_directory_path() / "lightlab_grade_text_test";
+  fs::remove_all(dir);
+  writeHtmlReport(r, dir.string());
+  const std::string html = readTextFile((dir / "report.html").string());
+  fs::remove_all(dir);
+  EXPECT_NE(html.find("0 / 100 points + 20 / 20 optional"), std::string::npos);
+  EXPECT_NE(html.find("still the stub (all 3 checks): write f, g"), std::string::npos);
+  EXPECT_NE(html.find("look at: <code>a9/stub.cpp</code> (f, g)"), std::string::npos);
+  EXPECT_NE(html.find("Optional, on top</td><td class=\"score\">20 / 20"), std::string::npos);
+  EXPECT_EQ(html.find("its stub ran in T.One"), std::string::npos);  // no card per check of a stub
+  EXPECT_NE(html.find("its stub ran in T.Three"), std::string::npos);
+
   r.tasks = {extra};  // only the optional task graded (--task A9.3)
   finalizeScores(r);
   EXPECT_NE(textReport(r).find("A9 Sample: 20 / 20 optional points (seed"), std::string::npos) << textReport(r);

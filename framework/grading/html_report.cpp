@@ -122,13 +122,13 @@ std::string imageEvidence(const ImageEvidence& images, const fs::path& dir) {
   return html + "</div>\n";
 }
 
-std::string testHtml(const TestResult& t, const fs::path& dir) {
+std::string testHtml(const TaskResult& task, const TestResult& t, const fs::path& dir) {
   std::string html = "<div class=\"test " + std::string(statusStyle(t.status).cssClass) + "\">\n";
   html += "<div class=\"test-head\">" + badge(t.status) + " <span class=\"name\">" +
           escapeMarkup(t.name, true) + "</span> <span class=\"meta\">" + escapeMarkup(t.kind, true) +
           (t.kind.empty() ? "" : " &middot; ") + "weight " + formatNumber(t.weight, 3) +
           " &middot; " + formatNumber(t.seconds, 2) + " s</span></div>\n";
-  if (!t.message.empty()) html += "<p class=\"message\">" + escapeMarkup(t.message, true) + "</p>\n";
+  if (!t.message.empty()) html += "<p class=\"message\">" + escapeMarkup(shownMessage(task, t), true) + "</p>\n";
   if (!t.details.empty()) html += "<pre>" + escapeMarkup(t.details, true) + "</pre>\n";
   if (t.images && t.status == Status::Passed)  // a passed test's pictures on request
     html += "<details><summary>images</summary>\n" + imageEvidence(*t.images, dir) + "</details>\n";
@@ -162,6 +162,8 @@ a { color: #2459a8; text-decoration: none; }
 .test.notimpl { border-left-color: #d4a017; }
 .test-head .name { font-weight: 600; }
 .message { margin: 6px 0; }
+.look { margin: 4px 0 8px; }
+code { background: #ececea; padding: 0 4px; border-radius: 3px; }
 pre { background: #f2f2f2; padding: 8px; overflow-x: auto; font-size: 13px; margin: 6px 0; }
 .images { display: flex; flex-wrap: wrap; gap: 16px; align-items: flex-start; margin-top: 8px; }
 figure { margin: 0; }
@@ -204,8 +206,7 @@ void writeHtmlReport(const GradeResult& result, const std::string& dir) {
   html += "<title>" + escapeMarkup(name, true) + " &ndash; grade report</title>\n";
   html += "<style>" + std::string(kStyle) + "</style>\n</head>\n<body>\n<header>\n";
   html += "<h1>" + escapeMarkup(name, true) + "</h1>\n";
-  html += "<p class=\"total\">" + formatNumber(result.score) + " / " +
-          formatNumber(result.maxScore) + " points</p>\n";
+  html += "<p class=\"total\">" + escapeMarkup(pointsSummary(result), true) + "</p>\n";
   html += "<p class=\"meta\">seed " + std::to_string(result.seed) + " &middot; " +
           (result.threads > 0 ? std::to_string(result.threads) + " threads" : "all cores") +
           " &middot; " + formatNumber(result.seconds, 1) + " s</p>\n";
@@ -219,19 +220,33 @@ void writeHtmlReport(const GradeResult& result, const std::string& dir) {
             formatNumber(task.score) + " / " + formatNumber(task.points) + "</td><td>" +
             badge(task.status) + "</td></tr>\n";
   }
+  const OptionalPoints optional = optionalPoints(result);
   html += "</tbody>\n<tfoot><tr><td></td><td>Total</td><td class=\"score\">" +
-          formatNumber(result.score) + " / " + formatNumber(result.maxScore) +
-          "</td><td></td></tr></tfoot>\n</table>\n</header>\n";
+          formatNumber(result.score - optional.score) + " / " + formatNumber(result.maxScore) + "</td><td></td></tr>\n";
+  if (optional.points > 0.0)
+    html += "<tr><td></td><td>Optional, on top</td><td class=\"score\">" + formatNumber(optional.score) + " / " +
+            formatNumber(optional.points) + "</td><td></td></tr>\n";
+  html += "</tfoot>\n</table>\n</header>\n";
 
   for (const TaskResult& task : result.tasks) {
     html += "<section id=\"" + anchor(task.id) + "\">\n<h2>" + badge(task.status) + " " +
             escapeMarkup(task.id, true) + " " + escapeMarkup(task.title, true) + " <span class=\"meta\">" +
             formatNumber(task.score) + " / " + formatNumber(task.points) + " points</span></h2>\n";
+    if (!task.file.empty() && task.status != Status::Passed)
+      html += "<p class=\"look\">look at: <code>" + escapeMarkup(task.file, true) + "</code> (" +
+              escapeMarkup(task.functions, true) + ")</p>\n";
     if (task.tests.empty()) html += "<p class=\"meta\">(no tests)</p>\n";
+    if (stillTheStub(task)) {  // one card, the checks listed on request
+      html += "<div class=\"test notimpl\"><p class=\"message\">" + escapeMarkup(stubAdvice(task), true) +
+              "</p>\n<details><summary>the checks</summary><ul>\n";
+      for (const TestResult& t : task.tests) html += "<li>" + escapeMarkup(t.name, true) + "</li>\n";
+      html += "</ul></details></div>\n</section>\n";
+      continue;
+    }
     // What needs looking at first: the tests that did not pass, then the rest (each in spec order).
     for (const bool passed : {false, true})
       for (const TestResult& t : task.tests)
-        if ((t.status == Status::Passed) == passed) html += testHtml(t, dirPath);
+        if ((t.status == Status::Passed) == passed) html += testHtml(task, t, dirPath);
     html += "</section>\n";
   }
   html += "<script>" + std::string(kScript) + "</script>\n</body>\n</html>\n";
