@@ -22,6 +22,14 @@
 
 namespace ll::testing_support {
 
+// A hit as a failure message states it: "primitive 166 at t = 0.587939262", or "no hit".
+inline std::string describeHit(const Hit& h) {
+  if (!h.valid()) return "no hit";
+  char t[32];
+  std::snprintf(t, sizeof t, "%.9g", static_cast<double>(h.t));
+  return "primitive " + std::to_string(h.prim) + " at t = " + t;
+}
+
 // The seed of the task tests' random inputs: $LIGHTLAB_GRADING_SEED, else 1. The
 // autograder sets its own (the student tree does not hold it), so a lookup table of
 // the inputs a student can see earns nothing.

@@ -271,10 +271,11 @@ void expectMatchesBruteForce(const Geometry& g, const std::vector<Ray>& rays, si
       if (!same && ++wrongHits <= 3)
         ADD_FAILURE() << "ray " << i << " o=(" << rays[i].origin.x << "," << rays[i].origin.y << ","
                       << rays[i].origin.z << ") d=(" << rays[i].dir.x << "," << rays[i].dir.y << "," << rays[i].dir.z
-                      << ") [" << rays[i].tmin << "," << rays[i].tmax << "]: got prim " << h.prim << " t=" << h.t
-                      << ", brute force prim " << r.prim << " t=" << r.t;
+                      << ") [" << rays[i].tmin << "," << rays[i].tmax << "]: got " << testing_support::describeHit(h)
+                      << ", brute force " << testing_support::describeHit(r);
       if (!occSame && ++wrongOcclusion <= 3)
-        ADD_FAILURE() << "ray " << i << ": occlusion differs from brute force (" << int(ref.occluded[i]) << ")";
+        ADD_FAILURE() << "ray " << i << ": occluded() says " << (occ ? "blocked" : "free") << ", brute force "
+                      << (ref.occluded[i] != 0 ? "blocked" : "free");
     }
     // Embree's own triangle test may decide a few rays grazing an edge differently.
     const size_t allowed = c.exact() ? 0 : rays.size() / 5000;
@@ -894,8 +895,9 @@ void expectSplitPlaneRaysSeeBothSides(const std::string& accelerator) {
     SCOPED_TRACE(config.label());
     Hit h;
     make(config, g)->intersect(ray, h, c);
-    EXPECT_EQ(h.prim, ref.prim);
-    EXPECT_EQ(h.t, ref.t);
+    EXPECT_TRUE(h.prim == ref.prim && h.t == ref.t)
+        << "the ray from (1, 0.5, 0) along +z lies in the plane x = 1: got " << testing_support::describeHit(h)
+        << ", brute force " << testing_support::describeHit(ref) << " (the wall touching x = 1 from above)";
   }
 }
 

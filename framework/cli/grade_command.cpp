@@ -3,7 +3,8 @@
 //                [--student-modules DIR] [--sources DIR] [--sandbox-user NAME] [--work-dir DIR]
 //                [--budget S] [--test-timeout S] [--render-timeout S] [--grading-seed N]
 // Grades the assignment (A1..A6, a folder name, or a grading.json) with the
-// code this build holds (in the student tree: build/modules): the task tests,
+// code this build holds (in the student tree: build/modules, rebuilt first from
+// the files as saved): the task tests,
 // the reference images and the complexity probes of
 // assignments/<dir>/grading.json. Prints the score table with every failed
 // check in full, and writes the reports into DIR (default
@@ -24,6 +25,9 @@
 #include "core/subprocess.h"
 #include "grading/grade_reports.h"
 #include "grading/grader.h"
+#include "tasks/module_builder.h"
+#include "tasks/task_catalog.h"
+#include "tasks/task_modes.h"
 
 namespace ll::cli {
 
@@ -56,6 +60,27 @@ Sandbox sandboxFor(const std::string& name) {
   s.fileBytes = 256ull << 20;  // no file larger than 256 MiB
   return s;
 }
+// The student tree grades the code as saved, not its last build: the graded tasks' modules are
+// rebuilt first (a no-op when up to date). A task that does not compile is graded as such, with
+// the compiler's output -- not by the module its last good build left.
+void rebuildGradedModules(const grading::GradingSpec& spec, const std::string& onlyTask, grading::GraderOptions& g,
+                          bool quiet) {
+  std::vector<int> graded;
+  for (const TaskSpec& t : spec.tasks)
+    if (onlyTask.empty() || t.id == onlyTask)
+      if (const int i = tasks::findTask(t.id); i >= 0) graded.push_back(i);
+  if (graded.empty() || tasks::buildRoot().empty()) return;
+  if (!quiet) std::fprintf(stderr, "lightlab: grade: building your code as saved (cmake --build %s) ...\n", tasks::buildRoot().c_str());
+  if (tasks::buildTaskModules(graded, tasks::buildRoot(), tasks::sourceRoot()).ok) return;
+  for (int task : graded) {  // one failed: which ones (each on its own, so one error does not hide another)
+    const tasks::ModuleBuild b = tasks::buildTaskModules({task}, tasks::buildRoot(), tasks::sourceRoot());
+    if (b.ok) continue;
+    const std::string id = tasks::taskCatalog()[static_cast<size_t>(task)].id;
+    g.buildFailures[id] = b.log;
+    if (!quiet) std::fprintf(stderr, "lightlab: grade: %s does not compile: %s\n", id.c_str(), b.firstError.oneLine().c_str());
+  }
+}
+
 }  // namespace
 
 Command addGradeCommand(CLI::App& app, const GlobalOptions& global) {
@@ -115,6 +140,8 @@ Command addGradeCommand(CLI::App& app, const GlobalOptions& global) {
           g.buildFailures[t.id] = log.empty() ? "no task module " + dir + "/lightlab_" + t.id + ".so" : log;
         }
     }
+    if (tasks::modulesEnabled() && o->studentModules.empty() && o->taskTests.empty())
+      rebuildGradedModules(spec, o->task, g, global.quiet);
     std::error_code ec;
     fs::create_directories(g.reportDir, ec);
     if (ec) throwUserError("grade: cannot create " + g.reportDir + ": " + ec.message());

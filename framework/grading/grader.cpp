@@ -138,7 +138,8 @@ class Grader {
  public:
   Grader(const GradingSpec& spec, const GraderOptions& o) : spec_(spec), o_(o), start_(Clock::now()) {
     files_ = o.reportDir + "/files";
-    work_ = o.workDir.empty() ? files_ + "/work" : o.workDir;
+    // Absolute: the renders and tests run inside work_ and are handed paths in it.
+    work_ = fs::absolute(o.workDir.empty() ? files_ + "/work" : o.workDir).lexically_normal().string();
     fs::create_directories(files_);
     fs::create_directories(work_);
     if (o.sandbox.active() && geteuid() == 0) {

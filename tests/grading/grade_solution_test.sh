@@ -5,9 +5,15 @@ set -euo pipefail
 lightlab=${1:?usage: grade_solution_test.sh LIGHTLAB WORKDIR THREADS SEED}
 work=${2:?} threads=${3:?} seed=${4:?}
 rm -rf "$work"
+mkdir -p "$work"
+work=$(cd "$work" && pwd)
+# The report folder relative to the working directory, as a student names it (the default,
+# out/grade/A2, is relative too): the renders run in a folder of their own and must not
+# resolve their paths against it.
+cd "$(dirname "$work")"
 for a in A1 A2 A3 A4 A5 A6; do
   "$lightlab" --quiet --threads "$threads" grade "$a" --seed "$seed" --format text,gradescope,junit,html \
-    --report "$work/$a" > "$work.$a.txt" 2>&1 || { cat "$work.$a.txt"; echo "FAIL: grading $a exited with an error"; exit 1; }
+    --report "$(basename "$work")/$a" > "$work.$a.txt" 2>&1 || { cat "$work.$a.txt"; echo "FAIL: grading $a exited with an error"; exit 1; }
   python3 - "$work/$a/results.json" "$a" <<'PY' || { cat "$work.$a.txt"; exit 1; }
 import json, sys
 d = json.load(open(sys.argv[1]))

@@ -40,12 +40,12 @@ inline void expectAnswers(const Geometry& g, const std::vector<Expected>& cases)
       const bool found = a.accel->intersect(e.ray, hit, counters);
       const bool occluded = a.accel->occluded(e.ray, counters);
       if (e.prim == Hit::kNone) {
-        EXPECT_FALSE(found) << e.what << ": hit primitive " << hit.prim << " at t = " << hit.t;
-        EXPECT_FALSE(occluded) << e.what;
+        EXPECT_FALSE(found) << e.what << ": should miss, got " << testing_support::describeHit(hit);
+        EXPECT_FALSE(occluded) << e.what << ": should miss, but occluded() says blocked";
         continue;
       }
-      ASSERT_TRUE(found) << e.what;
-      EXPECT_TRUE(occluded) << e.what;
+      ASSERT_TRUE(found) << e.what << ": got no hit, expected primitive " << e.prim << " at t = " << e.t;
+      EXPECT_TRUE(occluded) << e.what << ": occluded() says free, expected blocked by primitive " << e.prim;
       EXPECT_EQ(hit.prim, e.prim) << e.what;
       EXPECT_NEAR(hit.t, e.t, e.tolerance) << e.what;
     }
