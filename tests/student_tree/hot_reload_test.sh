@@ -12,7 +12,9 @@
 #      window while the last good picture stays;
 #   4. a segfault in the student's function stops pane A with a message naming
 #      A2.4, and the window stays up;
-#   5. fixing it shows the picture again.
+#   5. fixing it shows the picture again;
+#   6. `lightlab grade A2` grades the files as saved (a compile error as such, then the
+#      solution with full marks), with the default, relative report folder.
 # The stub is restored (and rebuilt) at the end.
 # Usage: hot_reload_test.sh STUDENT_TREE WORKDIR SCREENSHOT_CHECK    (run under xvfb-run)
 set -euo pipefail
@@ -116,3 +118,29 @@ until_shot s6 "j['reload']['reloads'] >= 3 and $pane_a_done" 300
 m=$(magenta s6)
 python3 -c "import sys; sys.exit(0 if $m < 0.01 else 1)" || fail "after the fix pane A shows magenta ($m)"
 echo "ok: fixed and saved: the picture is back"
+
+# 6. Grading, the handout's way (from the tree's root, the default report folder out/grade/A2): the code
+#    as saved, not its last build. A syntax error saved with no window open is graded as not compiling;
+#    the solution saved then scores full marks, its reference images included.
+kill "$gui"; wait "$gui" 2>/dev/null || true
+gui=
+graded() {  # NAME: grade A2.4 as a student would, the text report kept as NAME.txt
+  (cd "$tree" && build/lightlab --quiet grade A2 --task A2.4) > "$1.txt" 2>&1 ||
+    { cat "$1.txt"; echo "FAIL: grading exited with $?"; exit 1; }
+}
+save broken.cpp
+graded grade_broken
+grep -q "does not compile: .*blinn_phong.cpp:$line:" grade_broken.txt ||
+  { cat grade_broken.txt; echo "FAIL: the grade does not say that blinn_phong.cpp:$line does not compile"; exit 1; }
+echo "ok: grade rebuilt the saved file first and reports its compile error"
+save solution.cpp
+graded grade_solution
+python3 - "$tree/out/grade/A2/results.json" grade_solution.txt <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+tests = [t for t in d["tests"] if t["number"] == "A2.4"]
+lost = [t["name"] + ": " + (t["output"].splitlines() or [""])[0] for t in tests if t["score"] < t["max_score"]]
+if not tests or lost or not any(" image " in t["name"] for t in tests):
+    sys.exit(open(sys.argv[2]).read() + f"\nFAIL: the saved solution of A2.4 does not score full marks with its images: {lost}")
+print(f"ok: the saved solution graded in the default report folder: A2.4 full marks over {len(tests)} checks, images included")
+PY
