@@ -27,10 +27,11 @@ struct Item {
 
 std::vector<Item> itemsOf(const PaneState& p) {
   std::vector<Item> items{{"technique", p.technique}, {"accelerator", p.accelerator}};
-  if (p.view != PaneView::Image)
-    items.push_back({"view", p.view == PaneView::NodesVisited       ? "nodes visited"
-                             : p.view == PaneView::PrimitivesTested ? "primitives tested"
-                                                                    : "light paths"});
+  // Every pane has a view, the picture too: a picture beside a heatmap is the difference to name.
+  items.push_back({"view", p.view == PaneView::Image              ? "picture"
+                           : p.view == PaneView::NodesVisited     ? "nodes visited"
+                           : p.view == PaneView::PrimitivesTested ? "primitives tested"
+                                                                  : "light paths"});
   items.push_back({"spp", std::to_string(p.spp) + " spp"});
   const auto params = [&](const ParamSet& set, const std::string& prefix) {
     for (const ParamDecl& d : set.decls()) {

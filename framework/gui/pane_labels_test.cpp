@@ -52,6 +52,19 @@ TEST(PaneLabels, AcceleratorsAreNamedWhenOnlyTheyDiffer) {
   EXPECT_EQ(distinguishingLabels(app), (std::vector<std::string>{"A  bvh", "B  kdtree"}));
 }
 
+// The BSP slide: one accelerator, its picture beside its nodes-visited heatmap. Only B had a
+// view to name, so the labels named neither.
+TEST(PaneLabels, APictureBesideAHeatmapIsNamed) {
+  AppState app;
+  initPanes(app);
+  app.paneCount = 2;
+  use(app, 0, "raycast", "bsp");
+  use(app, 1, "raycast", "bsp");
+  app.panes[0].spp = app.panes[1].spp = 1;
+  app.panes[1].view = PaneView::NodesVisited;
+  EXPECT_EQ(distinguishingLabels(app), (std::vector<std::string>{"A  picture", "B  nodes visited"}));
+}
+
 TEST(PaneLabels, OnePaneOrAlikePanesShowTheTechnique) {
   AppState app;
   initPanes(app);

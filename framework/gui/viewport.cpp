@@ -16,6 +16,7 @@
 #include "gui/accuracy_plot.h"
 #include "gui/app_actions.h"
 #include "gui/caption_wrap.h"
+#include "gui/legend_labels.h"
 #include "gui/pane_labels.h"
 #include "gui/ray_inspector.h"
 #include "gui/structure_overlay.h"
@@ -309,7 +310,7 @@ void uploadFinished(AppState& app) {
   }
 }
 
-// A colour bar from 0 to maxValue under the text labels 0, max/2 and max.
+// A colour bar from 0 to maxValue over the labels 0, max/2 and max (those that fit: legend_labels.h).
 void drawLegend(ImDrawList* dl, Rect r, float maxValue, bool automatic) {
   const float barH = uiPx(14.0f);
   const int segments = 64;
@@ -319,14 +320,10 @@ void drawLegend(ImDrawList* dl, Rect r, float maxValue, bool automatic) {
     dl->AddRectFilledMultiColor(ImVec2(r.x + r.w * t0, r.y), ImVec2(r.x + r.w * t1, r.y + barH), c0,
                                 c1, c1, c0);
   }
-  char buf[64];
   const float ty = r.y + barH + 2.0f;
-  dl->AddText(ImVec2(r.x, ty), IM_COL32_WHITE, "0");
-  std::snprintf(buf, sizeof buf, "%.3g", static_cast<double>(maxValue) / 2);
-  dl->AddText(ImVec2(r.x + r.w / 2 - ImGui::CalcTextSize(buf).x / 2, ty), IM_COL32_WHITE, buf);
-  std::snprintf(buf, sizeof buf, "%.3g%s", static_cast<double>(maxValue),
-                automatic ? " (auto, 99th pct)" : "");
-  dl->AddText(ImVec2(r.x + r.w - ImGui::CalcTextSize(buf).x, ty), IM_COL32_WHITE, buf);
+  const auto measure = [](std::string_view s) { return ImGui::CalcTextSize(s.data(), s.data() + s.size()).x; };
+  for (const LegendLabel& l : legendLabels(r.w, maxValue, automatic, uiPx(8.0f), measure))
+    dl->AddText(ImVec2(r.x + l.x, ty), IM_COL32_WHITE, l.text.c_str());
 }
 
 // The light-path view's labels: each tile's class and share, at the tile's bottom-left corner (the caption
