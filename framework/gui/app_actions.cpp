@@ -9,6 +9,7 @@
 
 #include "core/files.h"
 #include "core/error.h"
+#include "gui/pane_labels.h"
 #include "gui/view_camera.h"
 #include "modules/registry.h"
 #include "render/cost_image.h"
@@ -197,6 +198,7 @@ void applyPreset(AppState& app, const ViewPreset& preset) {
       for (const auto& [k, v] : setup.accelParams) p.accelParams.set(k, v);
       p.spp = setup.spp;
       p.view = viewFromName(setup.view);
+      p.label = setup.label;
     }
   } catch (const std::exception& e) {
     addMessage(app, std::string("preset not applied: ") + e.what());
@@ -213,6 +215,8 @@ void applyPreset(AppState& app, const ViewPreset& preset) {
     dst.savedAccelParams.clear();
     dst.spp = src.spp;
     dst.view = src.view;
+    dst.label = src.label;
+    dst.labelFor = paneSettings(dst);
     dst.dirty = true;
   }
   app.paneCount = preset.paneCount;
@@ -271,6 +275,7 @@ ViewPreset capturePreset(const AppState& app) {
       s.techniqueParams[d.name] = pane.techniqueParams.text(d.name);
     for (const ParamDecl& d : pane.accelParams.decls())
       s.accelParams[d.name] = pane.accelParams.text(d.name);
+    if (paneSettings(pane) == pane.labelFor) s.label = pane.label;  // (a changed pane lost its label)
     p.panes.push_back(s);
   }
   return p;

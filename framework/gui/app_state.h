@@ -38,6 +38,9 @@ struct PaneState {
   std::map<std::string, ParamSet> savedTechniqueParams, savedAccelParams;
   int spp = 16;
   PaneView view = PaneView::Image;
+  // The preset's name for the pane and the settings it was given for (paneSettings): projector mode
+  // shows it while the pane keeps those settings; any change brings back the computed label.
+  std::string label, labelFor;
   std::unique_ptr<PaneRenderer> renderer = std::make_unique<PaneRenderer>();
   bool dirty = true;  // settings changed since the last submit
   uint64_t submitted = 0;  // the renderer's id of the last submit (shown.request lags it until the worker starts)

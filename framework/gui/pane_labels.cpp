@@ -26,7 +26,8 @@ struct Item {
 };
 
 std::vector<Item> itemsOf(const PaneState& p) {
-  std::vector<Item> items{{"technique", p.technique}, {"accelerator", p.accelerator}};
+  std::vector<Item> items{{"technique", p.technique},
+                          {"accelerator", p.accelerator == "none" ? std::string("brute force") : p.accelerator}};
   // Every pane has a view, the picture too: a picture beside a heatmap is the difference to name.
   items.push_back({"view", p.view == PaneView::Image              ? "picture"
                            : p.view == PaneView::NodesVisited     ? "nodes visited"
@@ -64,10 +65,19 @@ std::vector<std::vector<Item>> differingItems(const AppState& app) {
       values[it.key].insert(it.text);
       ++holders[it.key];
     }
+  // The accelerator is named only where it tells apart panes of one technique: beside a rasterizer
+  // ("none") a ray caster's "bvh" is noise that pushes the real difference off a projector's label.
+  bool acceleratorMatters = false;
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < n; ++j) {
+      const PaneState &a = app.panes[static_cast<size_t>(i)], &b = app.panes[static_cast<size_t>(j)];
+      acceleratorMatters = acceleratorMatters || (a.technique == b.technique && a.accelerator != b.accelerator);
+    }
   std::vector<std::vector<Item>> out(items.size());
   for (size_t i = 0; i < items.size(); ++i)
     for (const Item& it : items[i]) {
       const bool param = it.key.rfind("t:", 0) == 0 || it.key.rfind("a:", 0) == 0;
+      if (it.key == "accelerator" && !acceleratorMatters) continue;
       if (values[it.key].size() > 1 && !(param && holders[it.key] < 2) && !it.text.empty()) out[i].push_back(it);
     }
   return out;
@@ -75,11 +85,24 @@ std::vector<std::vector<Item>> differingItems(const AppState& app) {
 
 }  // namespace
 
+std::string paneSettings(const PaneState& pane) {
+  std::string s = pane.technique + "|" + pane.accelerator + "|" + std::to_string(pane.spp) + "|" +
+                  std::to_string(static_cast<int>(pane.view));
+  for (const ParamSet* set : {&pane.techniqueParams, &pane.accelParams})
+    for (const ParamDecl& d : set->decls()) s += "|" + d.name + "=" + set->text(d.name);
+  return s;
+}
+
 std::vector<std::string> distinguishingLabels(const AppState& app) {
   const auto items = differingItems(app);
   std::vector<std::string> labels;
   for (size_t i = 0; i < items.size(); ++i) {
     std::string line(1, paneLetter(static_cast<int>(i)));
+    const PaneState& pane = app.panes[i];
+    if (!pane.label.empty() && paneSettings(pane) == pane.labelFor) {
+      labels.push_back(line + "  " + pane.label);
+      continue;
+    }
     for (const Item& it : items[i]) line += "  " + it.text;
     if (items[i].empty()) line += "  " + app.panes[i].technique;
     labels.push_back(line);

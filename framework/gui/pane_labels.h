@@ -16,12 +16,17 @@ namespace ll::gui {
 // and every technique or accelerator parameter whose value is not the same
 // in all visible panes (a parameter of a technique only among the panes
 // that run it). A single pane, or panes that are all alike, show the technique.
+// A pane with a preset's label (and still its settings) shows that label.
 std::vector<std::string> distinguishingLabels(const AppState& app);
 
 // Per visible pane, what differs from the other panes besides the technique
 // and the accelerator ("depth 2  64 spp"; empty if nothing), for the
 // captions that name those two anyway.
 std::vector<std::string> parameterDifferences(const AppState& app);
+
+// The settings a pane's picture depends on (technique, accelerator, their
+// parameters, samples, view) as one string: a preset's pane label holds while they do.
+std::string paneSettings(const PaneState& pane);
 
 // The short name a parameter goes by in a label: "depth" for max_depth,
 // else the name with spaces for underscores.

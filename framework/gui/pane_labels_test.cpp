@@ -65,6 +65,50 @@ TEST(PaneLabels, APictureBesideAHeatmapIsNamed) {
   EXPECT_EQ(distinguishingLabels(app), (std::vector<std::string>{"A  picture", "B  nodes visited"}));
 }
 
+// The shading slide: three rasterized panes (no accelerator) beside a ray-cast one. The
+// accelerator only follows the technique there: the labels name the shading, not "none".
+TEST(PaneLabels, AnAcceleratorThatOnlyFollowsTheTechniqueIsNotNamed) {
+  AppState app;
+  initPanes(app);
+  app.paneCount = 4;
+  const char* shading[] = {"flat", "gouraud", "phong"};
+  for (int i = 0; i < 3; ++i) {
+    use(app, i, "blinn-phong", "none");
+    app.panes[static_cast<size_t>(i)].techniqueParams.set("shading", shading[i]);
+  }
+  use(app, 3, "raycast", "bvh");
+  for (PaneState& p : app.panes) p.spp = 4;
+  EXPECT_EQ(distinguishingLabels(app), (std::vector<std::string>{"A  blinn-phong  shading flat", "B  blinn-phong  shading gouraud",
+                                                                 "C  blinn-phong  shading phong", "D  raycast"}));
+  // Brute force by name, where the accelerator is the difference.
+  app.paneCount = 2;
+  use(app, 0, "raycast", "none");
+  use(app, 1, "raycast", "bvh");
+  EXPECT_EQ(distinguishingLabels(app), (std::vector<std::string>{"A  brute force", "B  bvh"}));
+}
+
+// A preset may name its panes for the slide's concept ("K²E"); the name holds while the pane keeps
+// the preset's settings, and any change brings back what differs.
+TEST(PaneLabels, APresetsPaneLabelHoldsUntilThePaneChanges) {
+  AppState app;
+  initPanes(app);
+  ViewPreset preset;
+  preset.paneCount = 2;
+  preset.scene = std::string(LIGHTLAB_DATA_DIR) + "/scenes/cornell_box.json";
+  preset.panes.resize(kMaxPanes);
+  preset.panes[0] = {"raycast", "bvh", {{"light_samples", "1"}}, {}, 4, "image", "one sample"};
+  preset.panes[1] = {"raycast", "bvh", {{"light_samples", "64"}}, {}, 4, "image", ""};
+  applyPreset(app, preset);
+  waitForSceneLoad(app);
+  EXPECT_EQ(distinguishingLabels(app), (std::vector<std::string>{"A  one sample", "B  light samples 64"}));
+  app.panes[0].techniqueParams.set("light_samples", "2");
+  EXPECT_EQ(distinguishingLabels(app), (std::vector<std::string>{"A  light samples 2", "B  light samples 64"}));
+  EXPECT_TRUE(capturePreset(app).panes[0].label.empty());
+  app.panes[0].techniqueParams.set("light_samples", "1");  // back to the preset's settings: its name again
+  EXPECT_EQ(distinguishingLabels(app)[0], "A  one sample");
+  EXPECT_EQ(capturePreset(app).panes[0].label, "one sample");
+}
+
 TEST(PaneLabels, OnePaneOrAlikePanesShowTheTechnique) {
   AppState app;
   initPanes(app);

@@ -26,10 +26,16 @@ void goToSlide(AppState& app, int index) {
   index = std::clamp(index, 0, p.count() - 1);
   if (index == p.index) return;
   p.index = index;
-  // The slide's preset; before the deck's first preset (a title slide), that one.
+  // The slide's preset. A slide without one keeps the view; arriving first at such a slide (the
+  // deck opened there: --slide N) shows what stepping from the first slide would: the last preset
+  // before it, else (a title slide before the deck's first preset) the first one after it.
+  const auto hasPreset = [&](int i) { return p.deck->slides[static_cast<size_t>(i)].preset.has_value(); };
   int from = index;
-  if (!p.deck->slides[static_cast<size_t>(from)].preset && p.applied < 0)
-    while (from + 1 < p.count() && !p.deck->slides[static_cast<size_t>(from)].preset) ++from;
+  if (!hasPreset(from) && p.applied < 0) {
+    while (from > 0 && !hasPreset(from)) --from;
+    if (!hasPreset(from))
+      for (from = index; from + 1 < p.count() && !hasPreset(from);) ++from;
+  }
   const Slide& slide = p.deck->slides[static_cast<size_t>(from)];
   if (!slide.preset) return;
   const float uiScale = app.uiScale;  // the presenter's, not the preset's

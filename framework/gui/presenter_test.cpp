@@ -46,5 +46,18 @@ TEST(Presenter, ArrivingAtASlideAppliesItsPreset) {
   EXPECT_EQ(app.presenter.applied, 0);
 }
 
+// Opened at a slide without a preset (--slide 3), the view is what stepping there from the first
+// slide shows: slide 2's, not the default scene's (nor a later slide's).
+TEST(Presenter, OpenedAtASlideWithoutAPresetShowsThePresetBeforeIt) {
+  AppState app;
+  initPanes(app);
+  openDeck(app, loadDeck(kDeck), 2);
+  waitForSceneLoad(app);
+  EXPECT_EQ(app.presenter.index, 2);
+  EXPECT_EQ(app.presenter.applied, 1);
+  EXPECT_EQ(app.panes[1].technique, "whitted");
+  EXPECT_TRUE(app.scenePath.ends_with("whitted_1980.json"));
+}
+
 }  // namespace
 }  // namespace ll::gui

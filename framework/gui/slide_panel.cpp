@@ -19,10 +19,10 @@ constexpr const char* kBoldFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans-B
 constexpr const char* kMonoFont = "/usr/share/fonts/truetype/dejavu/DejaVuSansMono.ttf";
 constexpr float kHeadingScale = 1.45f, kTitleScale = 1.9f;
 
-// Basic Latin + Latin-1, combining accents, Greek, punctuation, super- and
+// Basic Latin + Latin-1 and Latin Extended-A (names: Šidák), combining accents, Greek, punctuation, super- and
 // subscripts (and i, j, r, u, v), combining arrow, letterlike symbols, arrows, math operators,
 // floor brackets, angle brackets. Zero-terminated pairs.
-constexpr ImWchar kRanges[] = {0x0020, 0x00FF, 0x0300, 0x036F, 0x0370, 0x03FF, 0x1D62, 0x1D65, 0x2000, 0x206F,
+constexpr ImWchar kRanges[] = {0x0020, 0x00FF, 0x0100, 0x017F, 0x0300, 0x036F, 0x0370, 0x03FF, 0x1D62, 0x1D65, 0x2000, 0x206F,
                                0x2070, 0x209F, 0x20D7, 0x20D7, 0x2100, 0x214F, 0x2190, 0x21FF, 0x2200, 0x22FF,
                                0x2308, 0x230B, 0x27E8, 0x27E9, 0x2C7C, 0x2C7C, 0};
 

@@ -59,7 +59,7 @@ const Info& findNamed(const JsonNode& node, const std::string& key,
 
 PaneSetup parsePane(const JsonNode& n) {
   n.requireObject();
-  n.allowOnly({"technique", "accelerator", "params", "accel_params", "spp", "view"});
+  n.allowOnly({"technique", "accelerator", "params", "accel_params", "spp", "view", "label"});
   PaneSetup p;
   const TechniqueInfo& t = findNamed<TechniqueInfo>(n, "technique", &findTechnique);
   p.technique = t.name;
@@ -75,6 +75,13 @@ PaneSetup parsePane(const JsonNode& n) {
     p.view = n.string("view");
     if (p.view != "image" && p.view != "nodes" && p.view != "primitives" && p.view != "light-paths")
       n.child("view").fail("unknown view '" + p.view + "' (allowed: image, nodes, primitives, light-paths)");
+  }
+  if (n.has("label")) {  // read from the back of a hall: a few words
+    p.label = n.string("label");
+    size_t chars = 0;
+    for (const char c : p.label) chars += (static_cast<unsigned char>(c) & 0xC0) != 0x80 ? 1 : 0;
+    if (chars < 1 || chars > 24 || p.label.find('\n') != std::string::npos)
+      n.child("label").fail("a pane label is 1 to 24 characters on one line (got " + std::to_string(chars) + ")");
   }
   return p;
 }
@@ -224,6 +231,7 @@ nlohmann::json presetToJson(const ViewPreset& p, const std::string& baseDir) {
             {"view", pane.view}};
     pj["params"] = pane.techniqueParams;
     pj["accel_params"] = pane.accelParams;
+    if (!pane.label.empty()) pj["label"] = pane.label;
     j["panes"].push_back(pj);
   }
   j["compare"] = {{"mode", compareModeName(p.compare.mode)},

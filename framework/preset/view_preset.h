@@ -26,6 +26,7 @@ struct PaneSetup {
   std::map<std::string, std::string> accelParams;
   int spp = 16;                // passes of progressive refinement (samples per pixel)
   std::string view = "image";  // image | nodes | primitives (the accelerator's cost per pixel) | light-paths
+  std::string label;           // projector mode's name for the pane ("K²E", "Gauss-Seidel"); "" = what differs
 };
 
 enum class CompareMode { SideBySide, Wipe, Difference };

@@ -58,6 +58,7 @@ TEST(ViewPreset, SaveThenLoadGivesTheSameView) {
   a.techniqueParams["light_samples"] = "3";
   a.spp = 7;
   p.panes.assign(kMaxPanes, a);
+  p.panes[1].label = "K²E";
   p.panes[1].techniqueParams["intersection"] = "framework";
   p.compare.mode = CompareMode::Difference;
   p.compare.diff = DiffMode::Relative;
@@ -89,6 +90,8 @@ TEST(ViewPreset, SaveThenLoadGivesTheSameView) {
   EXPECT_EQ(q.panes[0].techniqueParams.at("light_samples"), "3");
   EXPECT_EQ(q.panes[1].techniqueParams.at("intersection"), "framework");
   EXPECT_EQ(q.panes[2].spp, 7);
+  EXPECT_EQ(q.panes[1].label, "K²E");
+  EXPECT_EQ(q.panes[0].label, "");
   EXPECT_EQ(q.compare.mode, CompareMode::Difference);
   EXPECT_EQ(q.compare.diff, DiffMode::Relative);
   EXPECT_EQ(q.compare.diffMax, 0.25f);
@@ -141,6 +144,10 @@ TEST(ViewPreset, BadPresetsNameThePlaceAndTheAllowedValues) {
 
   e = errorOf([&] { parse(head + R"("panes": [{"technique": "raycast"}], "colour": 1})"); });
   EXPECT_TRUE(contains(e, "colour")) << e;
+
+  e = errorOf([&] { parse(head + R"("panes": [{"technique": "raycast", "label": "a label far too long for a hall"}]})"); });
+  EXPECT_TRUE(contains(e, "1 to 24 characters")) << e;
+  EXPECT_TRUE(contains(e, "p.json:1:")) << e;
 
   e = errorOf([&] { loadPreset("/nonexistent/preset.json"); });
   EXPECT_TRUE(contains(e, "/nonexistent/preset.json")) << e;
