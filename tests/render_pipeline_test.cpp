@@ -22,6 +22,7 @@
 
 #include "cli/scene_setup.h"
 #include "core/error.h"
+#include "metrics/image_metrics.h"
 #include "modules/registry.h"
 #include "render/frame_buffer.h"
 #include "render/render_job.h"
@@ -440,6 +441,28 @@ TEST(RenderPipeline, CornellBoxRendersSanely) {
   EXPECT_EQ(j["rays"]["camera"].get<uint64_t>(), 64u * 64u);
   EXPECT_EQ(j["non_finite_samples"].get<uint64_t>(), 0u);
   EXPECT_FALSE(j["cancelled"].get<bool>());
+}
+
+// One shadow ray per area light and pass is an unbiased estimate: over passes it converges to the
+// soft shadow of many light samples. (It sampled the light's centre, a point light: a hard shadow in
+// every pass, which no number of passes softened -- the soft-shadow demo's 1-sample side.)
+TEST(RenderPipeline, OneLightSampleAPassConvergesToTheSoftShadow) {
+  const auto render = [](int lightSamples, int spp) {
+    cli::SceneSetup s = cli::setUpScene(kScenes + "cornell_box.json", "raycast", "bvh",
+                                        {"intersection=framework", "light_samples=" + std::to_string(lightSamples)});
+    const auto technique = s.technique->make();
+    RenderJob job(s.scene, *s.accel, *technique, s.techniqueParams, settings(48, 48, spp));
+    job.run();
+    return job.frame().resolve();
+  };
+  // Against 16 light samples a pass, at the same passes (the same pixel positions: only the light
+  // sampling differs). Without bias the error falls like 1/passes; a fixed light point keeps its
+  // hard shadow.
+  const double error = compareImages(render(1, 64), render(16, 64)).relmse;
+  const double noisy = compareImages(render(1, 4), render(16, 4)).relmse;
+  std::printf("relMSE of 1 light sample a pass against 16: %.5f after 4 passes, %.5f after 64\n", noisy, error);
+  EXPECT_LT(error, 0.002) << "1 light sample a pass, 64 passes";
+  EXPECT_GT(noisy, 4.0 * error) << "more passes remove the noise (4 passes: " << noisy << ")";
 }
 
 }  // namespace

@@ -78,7 +78,7 @@ class Raycast final : public PixelTechnique {
 
     for (const AreaLight& light : scene.areaLights) {
       for (int k = 0; k < lightSamples_; ++k) {
-        const LightPoint lp = scene.sampleAreaLight(light, stratifiedOffset(k, lightSamples_, *s.rng));
+        const LightPoint lp = scene.sampleAreaLight(light, stratifiedSample(k, lightSamples_, *s.rng));
         const Vec3 target = offsetRayOrigin(lp.position, faceTowards(lp.normal, sp.position - lp.position));
         const Vec3 d = target - sp.position;
         a2::LightInput in{};

@@ -142,7 +142,7 @@ Rgb WhittedTracer::local(const Surface& s) const {
     const int n = settings_.lightSamples;
     for (const AreaLight& light : scene_.areaLights) {
       for (int k = 0; k < n; ++k) {
-        const LightPoint lp = scene_.sampleAreaLight(light, stratifiedOffset(k, n, rng_));
+        const LightPoint lp = scene_.sampleAreaLight(light, stratifiedSample(k, n, rng_));
         const Vec3 target = offsetRayOrigin(lp.position, faceTowards(lp.normal, s.sp.position - lp.position));
         const Vec3 d = target - s.sp.position;
         const float distance = glm::length(d);

@@ -47,8 +47,12 @@ bool precomputationCacheEnabled() { return precomputationCache.load(); }
 void setPrecomputationCache(bool enabled) { precomputationCache = enabled; }
 
 Vec2 stratifiedOffset(int index, int count, Rng& rng) {
-  if (count <= 1) return Vec2(0.5f);
+  return count <= 1 ? Vec2(0.5f) : stratifiedSample(index, count, rng);
+}
+
+Vec2 stratifiedSample(int index, int count, Rng& rng) {
   const Vec2 jitter = rng.uniform2();
+  if (count <= 1) return jitter;
   const int n = static_cast<int>(std::lround(std::sqrt(static_cast<double>(count))));
   if (n * n == count) {  // an n x n grid, one jittered sample per cell
     const int cell = index % count;

@@ -115,6 +115,13 @@ class PixelTechnique : public Technique {
 // average is unbiased for any count).
 Vec2 stratifiedOffset(int index, int count, Rng& rng);
 
+// Sample `index` of `count` in the unit square for estimating an integral
+// (points on an area light): a jittered n x n grid for count n^2, else
+// `count` jittered columns, and for count 1 a uniform point -- never a fixed
+// one, which would turn an area light into a point light at its centre
+// (hard shadows that no number of passes softens).
+Vec2 stratifiedSample(int index, int count, Rng& rng);
+
 // Whether techniques may keep precomputed results (radiosity's solve) across
 // renders of the same scene and settings, as the GUI wants; `lightlab study`
 // turns it off so that every render pays for its own precomputation.
