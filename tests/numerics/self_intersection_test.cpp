@@ -96,6 +96,49 @@ TEST(Numerics_SelfIntersection, RaysLeavingOrEnteringASmallSphereFarFromTheOrigi
   }
 }
 
+// A wall in a coordinate plane, 550 units across (the Cornell box's right wall, x = 0, and its
+// floor, y = 0): its points have one exact zero coordinate, but a ray leaving one is tested against
+// the wall in coordinates of size 500. Shadow rays to the point light below the ceiling never hit
+// their own wall. (An offset by the ulps of each coordinate moved x by 2^-16 only, and a third of
+// the right wall's lower half was in its own shadow: speckled acne on the shadow-ray slide.)
+TEST(Numerics_SelfIntersection, ShadowRaysFromALargeWallInACoordinatePlane) {
+  const Scene scene = parseJsonScene(R"({
+    "camera": {"eye": [278, 273, -800], "target": [278, 273, 0], "up": [0, 1, 0], "fov_y_deg": 39.3, "width": 8, "height": 8},
+    "materials": {"white": {"kd": [0.7, 0.7, 0.7]}},
+    "objects": [
+      {"type": "quad", "name": "right_wall", "material": "white", "vertices": [[0, 0, 559.2], [0, 0, 0], [0, 548.8, 0], [0, 548.8, 559.2]]},
+      {"type": "quad", "name": "floor", "material": "white", "vertices": [[552.8, 0, 0], [0, 0, 0], [0, 0, 559.2], [549.6, 0, 559.2]]}
+    ]})",
+                                     "walls.json", ".");
+  const Vec3 light(278.0f, 545.0f, 279.5f), eye(278.0f, 273.0f, -800.0f);
+  for (const BuiltAccelerator& a : everyAccelerator(scene.geometry)) {
+    SCOPED_TRACE(a.name);
+    QueryCounters counters;
+    int points = 0, blocked = 0;
+    for (int i = 0; i < 40; ++i)
+      for (int j = 0; j < 40; ++j) {
+        // Points on the right wall and on the floor, seen from the camera.
+        const Vec3 aim = i % 2 == 0 ? Vec3(0.0f, 5.0f + 13.5f * static_cast<float>(j), 20.0f + 13.0f * static_cast<float>(i))
+                                    : Vec3(20.0f + 12.9f * static_cast<float>(j), 0.0f, 20.0f + 13.0f * static_cast<float>(i));
+        const Ray camera = ray(eye, aim - eye);
+        Hit hit;
+        if (!a.accel->intersect(camera, hit, counters)) continue;
+        const SurfacePoint sp = scene.surfacePoint(camera, hit);
+        const Vec3 toLight = light - sp.position;
+        const float distance = glm::length(toLight);
+        Ray shadow = ray(offsetRayOrigin(sp.position, faceTowards(sp.geometricNormal, toLight)), toLight / distance);
+        shadow.tmax = distance * (1.0f - 1e-4f);
+        ++points;
+        Hit again;
+        if (a.accel->intersect(shadow, again, counters) && ++blocked <= 3)
+          ADD_FAILURE() << "the shadow ray from " << sp.position.x << ", " << sp.position.y << ", " << sp.position.z
+                        << " hit its own wall (primitive " << again.prim << ") at t = " << again.t;
+      }
+    EXPECT_GT(points, 1000);
+    EXPECT_EQ(blocked, 0) << "of " << points << " shadow rays";
+  }
+}
+
 TEST(Numerics_SelfIntersection, RaysLeavingOrEnteringATiltedSlabFarFromTheOrigin) {
   for (float s : kOffsets) {
     const Vec3 c = s * Vec3(1.0f, 0.7f, -0.4f);
