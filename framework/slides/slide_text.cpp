@@ -441,13 +441,31 @@ std::vector<LaidLine> wrapSpans(const std::vector<TextSpan>& spans, float width,
     else
       pieces.push_back({span, text, 0.0f, 0.0f});
   };
+  int depth = 0;  // brackets open in the current formula
   for (size_t k = 0; k < spans.size(); ++k) {
     const std::string& t = spans[k].text;
-    if (spans[k].style == SpanStyle::Math) {  // the whole formula, spaces and all, glued to its neighbours
-      if (!units.back().trail.empty()) units.emplace_back();
-      put(units.back().pieces, k, t);
+    if (spans[k].style == SpanStyle::Math) {
+      // A formula is glued to its neighbours and never breaks -- except at a wide gap outside
+      // brackets (\quad, \qquad: two spaces or more), where display math sets clauses side by side.
+      size_t from = 0;
+      for (size_t i = 0; i < t.size(); ++i) {
+        const char c = t[i];
+        depth += (c == '(' || c == '[' || c == '{') ? 1 : (c == ')' || c == ']' || c == '}') ? -1 : 0;
+        if (depth > 0 || c != ' ' || i + 1 >= t.size() || t[i + 1] != ' ') continue;
+        if (!units.back().trail.empty()) units.emplace_back();
+        put(units.back().pieces, k, t.substr(from, i - from));
+        const size_t end = std::min(t.find_first_not_of(' ', i), t.size());
+        put(units.back().trail, k, t.substr(i, end - i));
+        from = end;
+        i = end - 1;
+      }
+      if (from < t.size()) {
+        if (!units.back().trail.empty()) units.emplace_back();
+        put(units.back().pieces, k, t.substr(from));
+      }
       continue;
     }
+    depth = 0;
     size_t i = 0;
     while (i < t.size()) {
       if (t[i] == '\n') {

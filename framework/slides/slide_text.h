@@ -53,7 +53,9 @@ std::string mathAsText(const std::string& latex);
 
 // Word wrapping of mixed spans into lines at most `width` wide. Breaks only
 // at spaces outside formulas: each run of consecutive Math spans (one
-// formula), with the punctuation touching it, is one unbreakable unit. A
+// formula), with the punctuation touching it, is one unbreakable unit --
+// but for its wide gaps (two spaces or more: \quad, \qquad) outside
+// brackets, where display math sets clauses side by side ("w = ...,  u = ..."). A
 // unit wider than `width` gets a line of its own, drawn at scale
 // max(minScale, width / its width); if it is still too wide the line is
 // wider than `width` (the caller scrolls). A "\n" in the text breaks the

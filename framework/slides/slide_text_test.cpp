@@ -125,6 +125,21 @@ TEST(WrapSpans, AFormulaWiderThanTheColumnIsShrunkOnItsOwnLine) {
   EXPECT_EQ(lines[1].pieces.size(), 1u);
 }
 
+// Display math with clauses side by side ("w = ...,  u = ...,  v = w x u", from \quad) breaks at
+// those wide gaps on a narrow slide panel, at full size, instead of shrinking the whole line.
+TEST(WrapSpans, AFormulaBreaksAtItsWideGapsOutsideBrackets) {
+  const std::vector<TextSpan> spans = {{"w = ab,  u = cd,    v = (e,  f)", SpanStyle::Math, 0}};
+  auto lines = wrapSpans(spans, 12.0f, charWidths);
+  ASSERT_EQ(lines.size(), 3u);
+  EXPECT_EQ(lineText(lines[0]), "w = ab,");
+  EXPECT_EQ(lineText(lines[1]), "u = cd,");
+  EXPECT_EQ(lineText(lines[2]), "v = (e,  f)");  // not inside the brackets
+  for (const auto& line : lines) EXPECT_EQ(line.scale, 1.0f);
+  lines = wrapSpans(spans, 40.0f, charWidths);  // wide enough: one line, gaps kept
+  ASSERT_EQ(lines.size(), 1u);
+  EXPECT_FLOAT_EQ(lines[0].width, 31.0f);
+}
+
 TEST(WrapSpans, HardBreaksAndPlainWords) {
   const std::vector<TextSpan> spans = {{"one two\nthree four five six", SpanStyle::Plain, 0}};
   const auto lines = wrapSpans(spans, 10.0f, charWidths);
