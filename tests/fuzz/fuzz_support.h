@@ -12,7 +12,8 @@
 
 namespace ll::fuzz {
 
-// An empty folder of this process (created once, left for the OS to clean).
+// An empty folder of this process under $TMPDIR (created once; run_fuzzer.sh points TMPDIR
+// into its work folder, which it empties on the next run).
 inline const std::string& scratchDir() {
   static const std::string dir = [] {
     const char* tmp = std::getenv("TMPDIR");

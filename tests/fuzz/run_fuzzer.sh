@@ -22,6 +22,9 @@ root=$(cd "$(dirname "$0")/../.." && pwd)
 corpus=$work/corpus
 [ $campaign = 0 ] && rm -rf "$corpus"  # deterministic: the seeds, not what earlier runs added
 mkdir -p "$corpus" "$work/artifacts"
+# The targets' scratch folders (fuzz_support.h) go under WORKDIR, not into /tmp for good.
+export TMPDIR=$work/tmp
+rm -rf "$TMPDIR" && mkdir -p "$TMPDIR"
 case "$target" in
   scene_json)
     cp "$root"/data/scenes/*.json "$root"/data/scenes/tests/*.json "$root"/data/scenes/tests/bad/*.json "$corpus"/
