@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -51,14 +52,23 @@ nlohmann::json objectAt(const nlohmann::json& j, const char* key) {
 }
 
 // The first line of `text` that mentions an error, else its first line.
+// The line of `text` that says what went wrong: a compiler's "file:line:col: error: ...", else the first
+// line with the word "error" that is not a command (a build log's compiler command carries -Werror),
+// else the first line.
 std::string firstErrorLine(const std::string& text) {
   std::istringstream in(text);
-  std::string line, first;
+  std::string line, first, fallback;
   while (std::getline(in, line)) {
     if (first.empty() && !line.empty()) first = line;
-    if (line.find("error") != std::string::npos) return line;
+    if (line.find(": error: ") != std::string::npos || line.find(": fatal error: ") != std::string::npos) return line;
+    if (!fallback.empty() || line.rfind("FAILED:", 0) == 0) continue;
+    for (size_t at = line.find("error"); at != std::string::npos; at = line.find("error", at + 1))
+      if (at == 0 || !(std::isalpha(static_cast<unsigned char>(line[at - 1])) || line[at - 1] == '-')) {
+        fallback = line;
+        break;
+      }
   }
-  return first;
+  return fallback.empty() ? first : fallback;
 }
 
 // GoogleTest's filter syntax: "POS1:POS2-NEG1:NEG2", '*' and '?' wildcards.
