@@ -3,7 +3,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -18,6 +17,7 @@
 #include "grading/tolerance.h"
 #include "metrics/image_metrics.h"
 #include "metrics/pixel_ztest.h"
+#include "tasks/module_builder.h"
 #include "tasks/task_catalog.h"
 
 namespace ll::grading {
@@ -52,23 +52,14 @@ nlohmann::json objectAt(const nlohmann::json& j, const char* key) {
 }
 
 // The first line of `text` that mentions an error, else its first line.
-// The line of `text` that says what went wrong: a compiler's "file:line:col: error: ...", else the first
-// line with the word "error" that is not a command (a build log's compiler command carries -Werror),
-// else the first line.
 std::string firstErrorLine(const std::string& text) {
   std::istringstream in(text);
-  std::string line, first, fallback;
+  std::string line, first;
   while (std::getline(in, line)) {
     if (first.empty() && !line.empty()) first = line;
-    if (line.find(": error: ") != std::string::npos || line.find(": fatal error: ") != std::string::npos) return line;
-    if (!fallback.empty() || line.rfind("FAILED:", 0) == 0) continue;
-    for (size_t at = line.find("error"); at != std::string::npos; at = line.find("error", at + 1))
-      if (at == 0 || !(std::isalpha(static_cast<unsigned char>(line[at - 1])) || line[at - 1] == '-')) {
-        fallback = line;
-        break;
-      }
+    if (line.find("error") != std::string::npos) return line;
   }
-  return fallback.empty() ? first : fallback;
+  return first;
 }
 
 // GoogleTest's filter syntax: "POS1:POS2-NEG1:NEG2", '*' and '?' wildcards.
@@ -221,7 +212,8 @@ class Grader {
   // uses a name the task forbids.
   std::string whyNotGradable(const TaskSpec& t) {
     if (o_.buildFailures.count(t.id))
-      return t.id + ": " + t.file + " does not compile: " + firstErrorLine(o_.buildFailures.at(t.id));
+      return t.id + ": " + t.file + " does not compile: " +
+             tasks::firstCompilerError(o_.buildFailures.at(t.id), tasks::sourceRoot()).oneLine();
     if (t.forbidden.empty()) return "";
     const std::string dir = o_.sourceDir.empty() ? spec_.folder() : o_.sourceDir;
     const std::string code = codeOnly(readTextFile(dir + "/" + t.file));
