@@ -1,16 +1,20 @@
 // Every preset named in every deck under slides/ loads and renders headless
 // (tiny: 40 pixels wide, one pass): a finite, non-uniform picture, and in the
 // solution build no student stub ran; every slide has speaker notes; code lines
-// fit the presenter's slide panel. One test per deck.
+// and formulas fit the presenter's slide panel. One test per deck.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include <gtest/gtest.h>
+#include <stb_truetype.h>
 
 #include "preset/preset_render.h"
 #include "slides/deck.h"
+#include "slides/slide_text.h"
 
 namespace ll {
 namespace {
@@ -95,6 +99,68 @@ TEST_P(SlideDeck, EveryCodeLineFitsThePresenterPanel) {
       }
     }
   }
+}
+
+// Text widths as the presenter measures them: the sum of DejaVu Sans' advances at `pixels` (ImGui
+// neither kerns nor snaps them), a script at 0.7 of the size.
+class PresenterFont {
+ public:
+  explicit PresenterFont(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    bytes_.assign(std::istreambuf_iterator<char>(in), {});
+    ok_ = !bytes_.empty() && stbtt_InitFont(&font_, bytes_.data(), stbtt_GetFontOffsetForIndex(bytes_.data(), 0));
+  }
+  bool ok() const { return ok_; }
+  float width(const std::string& utf8, float pixels) const {
+    const float scale = stbtt_ScaleForPixelHeight(&font_, pixels);
+    float w = 0.0f;
+    for (size_t i = 0; i < utf8.size();) {  // decode UTF-8
+      const auto c = static_cast<unsigned char>(utf8[i]);
+      const int n = c < 0x80 ? 1 : c < 0xE0 ? 2 : c < 0xF0 ? 3 : 4;
+      int cp = n == 1 ? c : c & (0x3F >> (n - 1));
+      for (int k = 1; k < n && i + k < utf8.size(); ++k) cp = (cp << 6) | (static_cast<unsigned char>(utf8[i + k]) & 0x3F);
+      i += static_cast<size_t>(n);
+      int advance = 0, bearing = 0;
+      stbtt_GetCodepointHMetrics(&font_, cp, &advance, &bearing);
+      w += static_cast<float>(advance) * scale;
+    }
+    return w;
+  }
+
+ private:
+  std::vector<unsigned char> bytes_;
+  stbtt_fontinfo font_{};
+  bool ok_ = false;
+};
+
+// Equations are read from the back of the hall too. At 1600x900 and UI scale 2 the presenter sets
+// slide text in 30-pixel DejaVu Sans (15 px x 2) in a column 584 px wide when the slide scrolls
+// (the slide panel, 0.42 of the window, less 2 x 16 px of padding and 2 x 28 px for the scrollbar),
+// a list item's 42 px (1.4 em) per level narrower. Every line of every formula on a slide --
+// display equations and those in the text -- is drawn at 0.9 of the full size or more: wrapSpans
+// breaks a formula where it does not fit and shrinks a part only that little. A part that must
+// shrink further reads small on a projector: split the equation in the deck, or say less in it.
+TEST_P(SlideDeck, EveryFormulaFitsThePresenterPanelNearlyFullSize) {
+  constexpr float kPixels = 30.0f, kColumn = 584.0f, kIndent = 42.0f;
+  const PresenterFont font("/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf");
+  if (!font.ok()) GTEST_SKIP() << "no DejaVu Sans (Debian fonts-dejavu-core): the presenter's font";
+  const MeasureText measure = [&](const std::string& text, const TextSpan& span) {
+    return font.width(text, kPixels * (span.script != 0 ? 0.7f : 1.0f));
+  };
+  const fs::path path = (fs::path(LIGHTLAB_DATA_DIR) / ".." / "slides" / (GetParam() + ".md")).lexically_normal();
+  const Deck deck = loadDeck(path.string());
+  for (const Slide& slide : deck.slides)
+    for (const TextBlock& block : slideText(slide.markdown)) {
+      if (block.kind == BlockKind::Heading || block.kind == BlockKind::Code) continue;  // headings have no formulas
+      const float indent =
+          block.kind == BlockKind::ListItem || block.kind == BlockKind::Paragraph ? kIndent * static_cast<float>(block.level) : 0.0f;
+      for (const LaidLine& line : wrapSpans(block.spans, kColumn - indent, measure)) {
+        std::string text;
+        for (const LaidPiece& piece : line.pieces) text += piece.text + " ";
+        EXPECT_GE(line.scale, 0.9f) << path.string() << " (" << slide.anchor << "): shrunk to " << line.scale
+                                    << " on the presenter's slide panel: " << text;
+      }
+    }
 }
 
 GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(SlideDeck);

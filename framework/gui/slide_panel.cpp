@@ -58,8 +58,9 @@ ImVec4 colourFor(SpanStyle style, const ImVec4& base) {
 constexpr float kScriptScale = 0.7f;  // sub- and superscripts without a Unicode form, drawn small
 
 // Word-wrapped text of mixed spans, starting at the cursor, lines from `left` to `right` (window
-// coordinates). Formulas never break (wrapSpans): one too wide is shrunk, and if still too wide the
-// line runs past `right` and the panel scrolls sideways. `centre` centres each line (display math).
+// coordinates). A formula breaks only where it does not fit (wrapSpans); a part that cannot break
+// is shrunk, and if still too wide the line runs past `right` and the panel scrolls sideways.
+// `centre` centres each line (display math).
 void drawSpans(const PresenterState& p, const std::vector<TextSpan>& spans, ImFont* base, const ImVec4& colour,
                float left, float right, bool centre = false) {
   const float globalScale = ImGui::GetFontSize() / ImGui::GetFont()->FontSize;  // window and UI font scale

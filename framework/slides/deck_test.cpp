@@ -86,7 +86,7 @@ TEST(SlideText, LatexBecomesReadableText) {
   EXPECT_EQ(mathAsText("\\frac{a}{b}"), "a/b");
   EXPECT_EQ(mathAsText("x^2 + F_{ij}"), "x² + Fᵢⱼ");
   EXPECT_EQ(mathAsText("\\int_\\Omega L \\cos^2\\theta"), "∫_Ω L cos²θ");
-  EXPECT_EQ(mathAsText("\\frac{l + v}{\\lVert l + v \\rVert}"), "(l + v)/‖ l + v ‖");
+  EXPECT_EQ(mathAsText("\\frac{l + v}{\\lVert l + v \\rVert}"), "(l + v)/‖l + v‖");
   EXPECT_EQ(mathAsText("\\mathrm{W\\,m^{-2}}"), "W m⁻²");
 }
 

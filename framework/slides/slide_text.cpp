@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cctype>
+#include <climits>
+#include <cstring>
 #include <map>
+#include <string_view>
 
 #include <md4c.h>
 
@@ -163,8 +166,8 @@ const std::map<std::string, std::string>& symbols() {
       {"sim", "∼"}, {"in", "∈"}, {"to", "→"}, {"rightarrow", "→"}, {"leftarrow", "←"}, {"Rightarrow", "⇒"},
       {"iff", "⇔"}, {"mapsto", "↦"}, {"langle", "⟨"}, {"rangle", "⟩"}, {"lVert", "‖"}, {"rVert", "‖"},
       {"Vert", "‖"}, {"|", "‖"}, {"vert", "|"}, {"lvert", "|"}, {"rvert", "|"}, {"ldots", "…"}, {"dots", "…"},
-      {"cdots", "⋯"}, {"forall", "∀"}, {"cup", "∪"}, {"cap", "∩"}, {"lfloor", "⌊"}, {"rfloor", "⌋"},
-      {"quad", "  "}, {"qquad", "    "}, {",", " "}, {";", " "}, {":", " "}, {"!", ""}, {" ", " "}, {"left", ""},
+      {"cdots", "⋯"}, {"forall", "∀"}, {"cup", "∪"}, {"cap", "∩"}, {"lfloor", "⌊"}, {"rfloor", "⌋"}, {"lceil", "⌈"}, {"rceil", "⌉"},
+      {"quad", "\u2003"}, {"qquad", "\u2003\u2003"}, {",", " "}, {";", " "}, {":", " "}, {"!", ""}, {" ", " "}, {"left", ""},
       {"right", ""}, {"big", ""}, {"Big", ""}, {"bigg", ""}, {"Bigg", ""}, {"displaystyle", ""}, {"{", "{"},
       {"}", "}"}, {"_", "_"}, {"%", "%"}, {"\\", "; "}, {"equiv", "≡"}, {"circ", "∘"}, {"star", "⋆"},
       {"ell", "ℓ"}, {"perp", "⊥"}, {"hbar", "ħ"}};
@@ -330,10 +333,19 @@ struct MathReader {
     const char ch = s[i++];
     if (ch == '-') return "−";
     if (ch == '~') return " ";
-    if (ch == '&') return "  ";
+    if (ch == '&') return "\u2003";  // an alignment point: a quad
     std::string cp(1, ch);
     while (i < s.size() && (static_cast<unsigned char>(s[i]) & 0xC0) == 0x80) cp += s[i++];
     return cp;
+  }
+
+  // Whether spaces and then a closing bracket come next.
+  bool closingNext() const {
+    size_t j = i;
+    while (j < s.size() && s[j] == ' ') ++j;
+    for (const char* close : {")", "]", "\\right", "\\rvert", "\\rVert", "\\rangle", "\\rfloor", "\\rceil"})
+      if (s.compare(j, std::strlen(close), close) == 0) return true;
+    return false;
   }
 
   Runs command() {  // at the backslash
@@ -343,6 +355,11 @@ struct MathReader {
     if (i == start && i < s.size()) ++i;  // \, \| \{ ...
     const std::string name = s.substr(start, i - start);
     Runs out;
+    if (name == "lvert" || name == "lVert" || name == "langle" || name == "lfloor" || name == "lceil" || name == "left") {
+      append(out, symbols().count(name) ? symbols().at(name) : "");
+      skipSpaces();  // no space inside a bracket
+      return out;
+    }
     if (name == "frac" || name == "dfrac" || name == "tfrac") {
       const Runs a = argument(), b = argument();
       append(out, grouped(a));
@@ -373,7 +390,7 @@ struct MathReader {
     } else if (name == "begin" || name == "end") {
       skipSpaces();
       const std::string env = i < s.size() && s[i] == '{' ? group() : "";
-      if (name == "begin" && env == "cases") append(out, "{ ");
+      if (env == "cases") append(out, name == "begin" ? "{ " : " }");  // closed too: its rows stay together
     } else if (isFunctionName(name)) {
       append(out, name);
       functionSpace(out);
@@ -399,6 +416,31 @@ size_t codePoints(const std::string& s) {
   return static_cast<size_t>(std::count_if(s.begin(), s.end(), [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; }));
 }
 
+// Math spacing as TeX sets it: the source's spaces are not spacing, so a space next to a space (\, or
+// a space typed after \cos) is dropped, as is one after an opening bracket, and a quad (an em space),
+// a comma or a semicolon takes none before it.
+void tidySpaces(Runs& runs) {
+  constexpr std::string_view kEm = "\u2003", kThin = "\u2009";
+  const auto endsWith = [](const std::string& s, std::string_view t) { return s.ends_with(t); };
+  std::string* last = nullptr;  // the text written so far, across runs
+  for (MathRun& r : runs) {
+    std::string out;
+    for (const std::string& cp : splitCodePoints(r.text)) {
+      const std::string& before = out.empty() && last ? *last : out;
+      const bool afterSpace = endsWith(before, " ") || endsWith(before, kEm) || endsWith(before, kThin);
+      if (cp == " " && (afterSpace || endsWith(before, "(") || endsWith(before, "["))) continue;
+      if (cp == kEm || cp == "," || cp == ";") {  // punctuation takes no space before it
+        std::string& b = out.empty() && last ? *last : out;
+        while (endsWith(b, " ")) b.pop_back();
+      }
+      out += cp;
+    }
+    r.text = std::move(out);
+    if (!r.text.empty()) last = &r.text;
+  }
+  std::erase_if(runs, [](const MathRun& r) { return r.text.empty(); });
+}
+
 std::vector<MathRun> mathRuns(const std::string& latex) {
   MathReader r{latex};
   Runs out;
@@ -406,6 +448,8 @@ std::vector<MathRun> mathRuns(const std::string& latex) {
     const char ch = latex[r.i];
     if (ch == '\\') {
       append(out, r.command());
+    } else if (ch == ' ' && r.closingNext()) {  // no space inside a bracket: (a + b), |x|
+      ++r.i;
     } else if (ch == '^' || ch == '_') {
       ++r.i;
       append(out, script(r.argument(), ch == '^' ? 1 : -1));
@@ -420,18 +464,53 @@ std::vector<MathRun> mathRuns(const std::string& latex) {
       append(out, r.character());
     }
   }
+  tidySpaces(out);
   return out;
 }
 
 std::string mathAsText(const std::string& latex) { return joined(mathRuns(latex)); }
 
+namespace {
+
+// Where a formula may break, weakest first; a formula breaks at a kind only when its part at the
+// kind before does not fit a line of its own (TeX's display-math conventions).
+enum Glue : int {
+  kFreeBreak = 0,    // between words, or a wide gap (\quad) between clauses of a formula
+  kBeforeRelation,   // before =, ≈, ≤, ... or after a comma, outside brackets
+  kBeforeOperator,   // before +, −, ·, × outside brackets
+  kBetweenFactors,   // a space between factors outside brackets: A/B C/D
+};
+
+bool isOneOf(const std::string& cp, std::initializer_list<std::string_view> set) {
+  return std::find(set.begin(), set.end(), cp) != set.end();
+}
+bool isRelation(const std::string& cp) {
+  return isOneOf(cp, {"=", "≈", "≤", "≥", "<", ">", "≠", "∝", "⇔", "⇒", "→", "≡", "∼", "∈", "↦"});
+}
+bool isOperator(const std::string& cp) { return isOneOf(cp, {"+", "−", "·", "×", "±"}); }
+// Nothing breaks after these: an operator binds to what follows, as does a big operator or an opening bracket.
+bool bindsForward(const std::string& cp) {
+  return isRelation(cp) || isOperator(cp) || isOneOf(cp, {"/", "∑", "∏", "∫", "√", "(", "[", "{", "⟨"});
+}
+// Unicode sub- and superscript characters: a formula's last base character is before them.
+bool isScriptCharacter(const std::string& cp) {
+  static const std::string scripts = "₀₁₂₃₄₅₆₇₈₉₊₋₌₍₎ₐₑₒₓₕₖₗₘₙₚₛₜᵢⱼᵣᵤᵥ⁰¹²³⁴⁵⁶⁷⁸⁹⁺⁻⁼⁽⁾ⁿⁱ";
+  return cp.size() > 1 && scripts.find(cp) != std::string::npos;
+}
+
+}  // namespace
+
 std::vector<LaidLine> wrapSpans(const std::vector<TextSpan>& spans, float width, const MeasureText& measure,
                                 float minScale) {
-  // Units that never break inside, each with the spaces after it and whether a line break follows.
+  constexpr float kSlightShrink = 0.9f;  // a part this much too wide is shrunk, not broken
+  // Units that never break inside, each with the spaces after it, the kind of break before it and
+  // whether a line break follows.
   struct Unit {
     std::vector<LaidPiece> pieces;
     std::vector<LaidPiece> trail;  // spaces: dropped at the end of a line
+    int glue = kFreeBreak;
     bool breakAfter = false;
+    float w = 0.0f, trailW = 0.0f;
   };
   std::vector<Unit> units(1);
   const auto put = [](std::vector<LaidPiece>& pieces, size_t span, const std::string& text) {
@@ -441,31 +520,68 @@ std::vector<LaidLine> wrapSpans(const std::vector<TextSpan>& spans, float width,
     else
       pieces.push_back({span, text, 0.0f, 0.0f});
   };
-  int depth = 0;  // brackets open in the current formula
+  const auto startUnit = [&](int glue) {
+    if (units.back().trail.empty()) return;
+    units.emplace_back();
+    units.back().glue = glue;
+  };
+  int depth = 0;                   // brackets open in the current formula
+  bool inBars = false, inNorm = false;  // inside |...|, ‖...‖
+  std::string lastBase;            // the formula's last character on the baseline, spaces and scripts aside
   for (size_t k = 0; k < spans.size(); ++k) {
     const std::string& t = spans[k].text;
     if (spans[k].style == SpanStyle::Math) {
-      // A formula is glued to its neighbours and never breaks -- except at a wide gap outside
-      // brackets (\quad, \qquad: two spaces or more), where display math sets clauses side by side.
-      size_t from = 0;
-      for (size_t i = 0; i < t.size(); ++i) {
-        const char c = t[i];
-        depth += (c == '(' || c == '[' || c == '{') ? 1 : (c == ')' || c == ']' || c == '}') ? -1 : 0;
-        if (depth > 0 || c != ' ' || i + 1 >= t.size() || t[i + 1] != ' ') continue;
-        if (!units.back().trail.empty()) units.emplace_back();
-        put(units.back().pieces, k, t.substr(from, i - from));
-        const size_t end = std::min(t.find_first_not_of(' ', i), t.size());
-        put(units.back().trail, k, t.substr(i, end - i));
-        from = end;
+      // A formula is glued to its neighbours. Outside brackets it may break at a wide gap (\quad,
+      // two spaces or more) freely, and at a space before a relation, an operator or a factor when
+      // it must; never after an operator.
+      const std::vector<std::string> cps = splitCodePoints(t);
+      std::string run;  // the text since the last break
+      for (size_t i = 0; i < cps.size(); ++i) {
+        const std::string& c = cps[i];
+        const bool space = c == " " || c == "\u2003";
+        if (!space || depth > 0 || inBars || inNorm || lastBase.empty()) {
+          depth += isOneOf(c, {"(", "[", "{", "⟨"}) ? 1 : isOneOf(c, {")", "]", "}", "⟩"}) ? -1 : 0;
+          inBars = inBars != (c == "|");
+          inNorm = inNorm != (c == "‖");
+          if (spans[k].script == 0 && !space && !isScriptCharacter(c)) lastBase = c;
+          run += c;
+          continue;
+        }
+        size_t end = i;  // past the spaces
+        std::string gap;
+        while (end < cps.size() && (cps[end] == " " || cps[end] == "\u2003")) gap += cps[end++];
+        const bool wide = gap != " ";
+        const std::string next = end < cps.size() ? cps[end] : "";
+        int glue = kFreeBreak;
+        if (!wide) {
+          if (next.empty() || bindsForward(lastBase))
+            glue = -1;  // no break
+          else
+            glue = lastBase == "," || isRelation(next) ? kBeforeRelation
+                   : isOperator(next)                  ? kBeforeOperator
+                                                       : kBetweenFactors;
+        }
+        if (glue < 0) {
+          run += gap;
+        } else {
+          startUnit(kFreeBreak);
+          put(units.back().pieces, k, run);
+          put(units.back().trail, k, gap);
+          units.emplace_back();
+          units.back().glue = glue;
+          run.clear();
+        }
         i = end - 1;
       }
-      if (from < t.size()) {
-        if (!units.back().trail.empty()) units.emplace_back();
-        put(units.back().pieces, k, t.substr(from));
+      if (!run.empty()) {
+        startUnit(kFreeBreak);
+        put(units.back().pieces, k, run);
       }
       continue;
     }
     depth = 0;
+    inBars = inNorm = false;
+    lastBase.clear();
     size_t i = 0;
     while (i < t.size()) {
       if (t[i] == '\n') {
@@ -477,12 +593,16 @@ std::vector<LaidLine> wrapSpans(const std::vector<TextSpan>& spans, float width,
         put(units.back().trail, k, t.substr(i, end - i));
         i = end;
       } else {
-        if (!units.back().trail.empty()) units.emplace_back();
+        startUnit(kFreeBreak);
         const size_t end = std::min(t.find_first_of(" \n", i), t.size());
         put(units.back().pieces, k, t.substr(i, end - i));
         i = end;
       }
     }
+  }
+  for (Unit& u : units) {
+    for (LaidPiece& p : u.pieces) u.w += (p.width = measure(p.text, spans[p.span]));
+    for (LaidPiece& p : u.trail) u.trailW += (p.width = measure(p.text, spans[p.span]));
   }
 
   std::vector<LaidLine> lines(1);
@@ -491,37 +611,67 @@ std::vector<LaidLine> wrapSpans(const std::vector<TextSpan>& spans, float width,
     lines.emplace_back();
     x = 0.0f;
   };
-  for (Unit& u : units) {
-    float w = 0.0f, trailW = 0.0f;
-    for (LaidPiece& p : u.pieces) w += (p.width = measure(p.text, spans[p.span]));
-    for (LaidPiece& p : u.trail) trailW += (p.width = measure(p.text, spans[p.span]));
-    if (!u.pieces.empty()) {
-      if (x > 0.0f && x + w > width) newLine();
-      if (w > width && width > 0.0f) {  // alone on its line, shrunk (and maybe still too wide)
-        if (!lines.back().pieces.empty()) newLine();
-        LaidLine& line = lines.back();
-        line.scale = std::max(minScale, width / w);
-        for (LaidPiece p : u.pieces) {
-          p.x = x * line.scale;
-          p.width *= line.scale;
-          x += p.width / line.scale;
-          line.pieces.push_back(p);
-        }
-        line.width = w * line.scale;
-        newLine();
-        continue;
-      }
+  const auto widthOf = [&](size_t a, size_t b) {  // units [a, b) on one line, without the last one's spaces
+    float w = 0.0f;
+    for (size_t i = a; i < b; ++i) w += units[i].w + (i + 1 < b ? units[i].trailW : 0.0f);
+    return w;
+  };
+  // Units [a, b) at the pen, drawn at `scale`.
+  const auto place = [&](size_t a, size_t b, float scale) {
+    for (size_t i = a; i < b; ++i) {
+      const Unit& u = units[i];
       LaidLine& line = lines.back();
+      line.scale = scale;
       for (LaidPiece p : u.pieces) {
-        p.x = x;
-        x += p.width;
+        p.x = x * scale;
+        p.width *= scale;
+        x += p.width / scale;
         line.pieces.push_back(p);
+        line.width = x * scale;
       }
-      line.width = x;
+      if (!line.pieces.empty()) x += u.trailW;  // no spaces at the start of a line
+      if (u.breakAfter) newLine();
     }
-    if (!lines.back().pieces.empty()) x += trailW;  // no spaces at the start of a line
-    if (u.breakAfter) newLine();
-  }
+  };
+  // Units [a, b), whose inner breaks are all of one kind or weaker: on this line if they fit, else on
+  // the next, shrunk a little if need be; too wide for that, broken at the strongest of their inner
+  // breaks; too wide and unbreakable, alone on a line, shrunk (and maybe still too wide).
+  const std::function<void(size_t, size_t)> lay = [&](size_t a, size_t b) {
+    const float w = widthOf(a, b);
+    if (x > 0.0f && x + w <= width) {
+      place(a, b, 1.0f);
+      return;
+    }
+    if (w <= width || width <= 0.0f) {
+      if (x > 0.0f) newLine();
+      place(a, b, 1.0f);
+      return;
+    }
+    if (w * kSlightShrink <= width) {  // a line of its own, a little smaller, reads better than a break
+      if (!lines.back().pieces.empty()) newLine();
+      place(a, b, width / w);
+      if (!lines.back().pieces.empty()) newLine();
+      return;
+    }
+    int strongest = INT_MAX;
+    for (size_t i = a + 1; i < b; ++i) strongest = std::min(strongest, units[i].glue);
+    if (strongest == INT_MAX) {
+      if (!lines.back().pieces.empty()) newLine();
+      place(a, b, std::max(minScale, width / w));
+      if (!lines.back().pieces.empty()) newLine();
+      return;
+    }
+    for (size_t from = a, i = a + 1; i <= b; ++i)
+      if (i == b || units[i].glue == strongest) {
+        lay(from, i);
+        from = i;
+      }
+  };
+  for (size_t from = 0, i = 1; i <= units.size(); ++i)
+    if (i == units.size() || units[i].glue == kFreeBreak) {
+      lay(from, i);
+      from = i;
+    }
   if (lines.size() > 1 && lines.back().pieces.empty()) lines.pop_back();
   return lines;
 }

@@ -1,6 +1,6 @@
 // A slide's Markdown as styled text blocks, for drawing without an HTML
 // engine (the GUI's presenter panel), and the line layout that keeps every
-// formula in one piece. Parsing is md4c's (CommonMark + GitHub tables +
+// formula whole where it fits. Parsing is md4c's (CommonMark + GitHub tables +
 // $...$ math); this file only collects its callbacks. Pure functions: the
 // GUI supplies the text widths (wrapSpans' measure), the tests a fake one.
 #pragma once
@@ -41,8 +41,9 @@ std::vector<TextBlock> slideText(const std::string& markdown);
 // LaTeX as Unicode text in runs: \rho -> ρ, \int -> ∫, x^2 -> x², F_{ij} ->
 // Fᵢⱼ, \sqrt{1 - x} -> √(1 − x), \frac{a}{b} -> a/b ((a + b)/c where the
 // parts need grouping), braces dropped. A sub- or superscript with no
-// Unicode form (L_{local}) is its own run with script -1 or +1. Legible,
-// not typeset.
+// Unicode form (L_{local}) is its own run with script -1 or +1. Spacing as
+// in TeX: the source's spaces collapse to one, \, is one space, \quad an em
+// space (U+2003). Legible, not typeset.
 struct MathRun {
   std::string text;
   int script = 0;  // 0 on the baseline, -1 subscript, +1 superscript
@@ -51,16 +52,20 @@ std::vector<MathRun> mathRuns(const std::string& latex);
 // The runs as one string, scripts without Unicode form as _x, ^x, _(a b).
 std::string mathAsText(const std::string& latex);
 
-// Word wrapping of mixed spans into lines at most `width` wide. Breaks only
-// at spaces outside formulas: each run of consecutive Math spans (one
-// formula), with the punctuation touching it, is one unbreakable unit --
-// but for its wide gaps (two spaces or more: \quad, \qquad) outside
-// brackets, where display math sets clauses side by side ("w = ...,  u = ..."). A
-// unit wider than `width` gets a line of its own, drawn at scale
-// max(minScale, width / its width); if it is still too wide the line is
-// wider than `width` (the caller scrolls). A "\n" in the text breaks the
-// line. `measure(text, span)` is the width of `text` drawn in that span's
-// style and script at scale 1.
+// Word wrapping of mixed spans into lines at most `width` wide. Breaks at
+// spaces; a formula (a run of consecutive Math spans, with the punctuation
+// touching it) is glued to its neighbours and breaks inside, outside
+// brackets, as display math does: freely at its wide gaps (\quad, \qquad,
+// or two spaces, where clauses stand side by side: "w = ...,  u = ..."), and
+// only where a part does not fit a line of its own, first before a relation
+// (=, ≈, ≤) or after a comma, then before an operator (+, −, ·), then between
+// factors (A/B C/D); never after an operator. A part at most 1/0.9 times too
+// wide is not broken but drawn a little smaller (scale 0.9 or more) on a line
+// of its own; one that cannot break gets a line of its own, drawn at scale
+// max(minScale, width / its width); if it is still too wide the line is wider
+// than `width` (the caller scrolls).
+// A "\n" in the text breaks the line. `measure(text, span)` is the width of
+// `text` drawn in that span's style and script at scale 1.
 struct LaidPiece {
   size_t span = 0;   // index into the spans
   std::string text;  // a part of spans[span].text

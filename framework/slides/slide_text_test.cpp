@@ -1,6 +1,8 @@
 // The presenter's text: LaTeX as readable Unicode (scripts, roots, fractions)
-// and the line layout that never breaks a formula.
+// and the line layout that keeps a formula whole where it fits.
 #include "slides/slide_text.h"
+
+#include <algorithm>
 
 #include <gtest/gtest.h>
 
@@ -47,7 +49,7 @@ TEST(MathText, RootsAndFractionsAreGrouped) {
   EXPECT_EQ(mathAsText("\\frac{a}{b}"), "a/b");
   EXPECT_EQ(mathAsText("\\frac{1}{2\\pi}"), "1/(2π)");
   EXPECT_EQ(mathAsText("\\frac{R_s + R_p}{2}"), "(Rₛ + Rₚ)/2");
-  EXPECT_EQ(mathAsText("\\frac{l + v}{\\lVert l + v \\rVert}"), "(l + v)/‖ l + v ‖");
+  EXPECT_EQ(mathAsText("\\frac{l + v}{\\lVert l + v \\rVert}"), "(l + v)/‖l + v‖");
   EXPECT_EQ(mathAsText("\\frac{\\theta}{2}"), "θ/2");
 }
 
@@ -58,7 +60,18 @@ TEST(MathText, OperatorsAndSpacing) {
   EXPECT_EQ(mathAsText("B_j \\mathrel{+}= x"), "Bⱼ += x");
   EXPECT_EQ(mathAsText("t_{near} \\le t_{far}"), "tₙₑₐᵣ ≤ t_far");  // no subscript f
   EXPECT_EQ(mathAsText("\\hat L"), "L\u0302");
-  EXPECT_EQ(mathAsText("\\begin{cases} a & b \\\\ 0 \\end{cases}"), "{  a    b ;  0 ");
+  EXPECT_EQ(mathAsText("\\begin{cases} a & b \\\\ 0 \\end{cases}"), "{ a\u2003b; 0 }");
+}
+
+// TeX's math spacing: the source's spaces are not spacing; \, is one space, \quad an em space.
+TEST(MathText, SourceSpacesCollapseAndAQuadIsAnEmSpace) {
+  EXPECT_EQ(mathAsText("n_2^2 \\,(1 - F)\\, D(h)"), "n₂² (1 − F) D(h)");
+  EXPECT_EQ(mathAsText("\\cos \\theta"), "cos\u2009θ");
+  EXPECT_EQ(mathAsText("a, \\quad b \\qquad c"), "a,\u2003b\u2003\u2003c");
+  EXPECT_EQ(mathAsText("\\text{with probability } q"), "with probability q");
+  EXPECT_EQ(mathAsText("\\pi \\left( (\\alpha^2 - 1) x + 1 \\right)^2"), "π ((α² − 1) x + 1)²");  // none inside brackets
+  EXPECT_EQ(mathAsText("\\lvert \\omega_i \\cdot h \\rvert\\, \\lVert n \\rVert"), "|ωᵢ · h| ‖n‖");
+  EXPECT_EQ(mathAsText("f(x , y ; z)"), "f(x, y; z)");
 }
 
 TEST(SlideText, AFormulaIsOneSpanSetAndScriptsAreTheirOwnSpans) {
@@ -79,7 +92,7 @@ TEST(SlideText, MathSplitOverLinesIsConvertedWhole) {
   EXPECT_EQ(blocks[0].spans[1].text, "(x + y)/2");
 }
 
-TEST(WrapSpans, BreaksAtSpacesButNeverInsideAFormula) {
+TEST(WrapSpans, BreaksAtSpacesButNotInsideAFormulaThatFits) {
   const std::vector<TextSpan> spans = {{"so the sum ", SpanStyle::Plain, 0},
                                        {"a + b + c", SpanStyle::Math, 0},
                                        {", then more words", SpanStyle::Plain, 0}};
@@ -94,7 +107,7 @@ TEST(WrapSpans, BreaksAtSpacesButNeverInsideAFormula) {
   // The formula's pieces are all on one line.
   int linesWithMath = 0;
   for (const auto& line : lines)
-    for (const auto& p : line.pieces) linesWithMath += p.span == 1;
+    linesWithMath += std::any_of(line.pieces.begin(), line.pieces.end(), [](const LaidPiece& p) { return p.span == 1; });
   EXPECT_EQ(linesWithMath, 1);
 }
 
@@ -109,7 +122,7 @@ TEST(WrapSpans, ScriptRunsStayWithTheirFormula) {
   EXPECT_FLOAT_EQ(lines[1].pieces[2].x, 1.0f + 5 * 0.7f);
 }
 
-TEST(WrapSpans, AFormulaWiderThanTheColumnIsShrunkOnItsOwnLine) {
+TEST(WrapSpans, AnUnbreakableFormulaWiderThanTheColumnIsShrunkOnItsOwnLine) {
   const std::vector<TextSpan> spans = {{"see ", SpanStyle::Plain, 0},
                                        {"0123456789012345678901234567890123456789", SpanStyle::Math, 0},
                                        {" after", SpanStyle::Plain, 0}};
@@ -138,6 +151,35 @@ TEST(WrapSpans, AFormulaBreaksAtItsWideGapsOutsideBrackets) {
   lines = wrapSpans(spans, 40.0f, charWidths);  // wide enough: one line, gaps kept
   ASSERT_EQ(lines.size(), 1u);
   EXPECT_FLOAT_EQ(lines[0].width, 31.0f);
+}
+
+// A clause wider than the line breaks before its relation, then before an operator, then between
+// factors -- the strongest break first, and only where a part does not fit; never after an operator.
+TEST(WrapSpans, AFormulaTooWideBreaksBeforeARelationFirst) {
+  const std::vector<TextSpan> spans = {{"fₜ(a, b) = (x + y)/z (u + v)/w", SpanStyle::Math, 0}};
+  auto lines = wrapSpans(spans, 30.0f, charWidths);  // fits: whole
+  ASSERT_EQ(lines.size(), 1u);
+  lines = wrapSpans(spans, 28.0f, charWidths);  // a little too wide: shrunk, not broken
+  ASSERT_EQ(lines.size(), 1u);
+  EXPECT_FLOAT_EQ(lines[0].scale, 28.0f / 30.0f);
+  lines = wrapSpans(spans, 22.0f, charWidths);  // broken: "= ..." fits a line of its own
+  ASSERT_EQ(lines.size(), 2u);
+  EXPECT_EQ(lineText(lines[0]), "fₜ(a, b)");
+  EXPECT_EQ(lineText(lines[1]), "= (x + y)/z (u + v)/w");
+  lines = wrapSpans(spans, 14.0f, charWidths);  // "= ..." does not: broken between its factors
+  ASSERT_EQ(lines.size(), 3u);
+  EXPECT_EQ(lineText(lines[0]), "fₜ(a, b)");
+  EXPECT_EQ(lineText(lines[1]), "= (x + y)/z");
+  EXPECT_EQ(lineText(lines[2]), "(u + v)/w");
+  for (const auto& line : lines) EXPECT_EQ(line.scale, 1.0f);
+
+  const std::vector<TextSpan> sum = {{"L = a + b·c + d, x", SpanStyle::Math, 0}};
+  lines = wrapSpans(sum, 12.0f, charWidths);
+  ASSERT_EQ(lines.size(), 2u);
+  // Broken before "=" and after the comma first; "= a + b·c + d," is still too wide and breaks before
+  // its operators, the parts filling the lines.
+  EXPECT_EQ(lineText(lines[0]), "L = a + b·c");
+  EXPECT_EQ(lineText(lines[1]), "+ d, x");
 }
 
 TEST(WrapSpans, HardBreaksAndPlainWords) {
