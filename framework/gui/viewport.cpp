@@ -344,7 +344,7 @@ void drawLightPathLabels(AppState& app, ImDrawList* dl, const PaneState& p, Rect
   }
 }
 
-// The structure overlay of pane `i` over its image rectangle r.
+// The structure overlay of pane `i` over its image rectangle r, above its bottom `bottomMargin` pixels.
 void drawPaneStructure(ImDrawList* dl, AppState& app, int i, Rect r, float bottomMargin) {
   PaneState& p = app.panes[static_cast<size_t>(i)];
   const auto accel = p.renderer->accelerator();
@@ -355,7 +355,10 @@ void drawPaneStructure(ImDrawList* dl, AppState& app, int i, Rect r, float botto
     p.overlayNodes = accel->nodesAtDepth(app.structureDepth);
   }
   const Camera camera = renderCamera(*app.scene, renderSettings(app, p));
+  // The lines stop above the heatmap legend (bottomMargin high), which must stay legible.
+  dl->PushClipRect(ImVec2(r.x, r.y), ImVec2(r.x + r.w, r.y + r.h - bottomMargin), true);
   const int hidden = drawStructure(dl, camera, p.overlayNodes, r.x, r.y, r.w, r.h);
+  dl->PopClipRect();
   char buf[96];
   if (p.overlayNodes.empty())
     std::snprintf(buf, sizeof buf, "%s has no nodes to draw", p.accelerator.c_str());
