@@ -164,7 +164,8 @@ a { color: #2459a8; text-decoration: none; }
 .message { margin: 6px 0; }
 .look { margin: 4px 0 8px; }
 code { background: #ececea; padding: 0 4px; border-radius: 3px; }
-pre { background: #f2f2f2; padding: 8px; overflow-x: auto; font-size: 13px; margin: 6px 0; }
+pre { background: #f2f2f2; padding: 8px; font-size: 13px; margin: 6px 0;
+      white-space: pre-wrap; overflow-wrap: anywhere; }  /* long commands wrap: printed, nothing is cut */
 .images { display: flex; flex-wrap: wrap; gap: 16px; align-items: flex-start; margin-top: 8px; }
 figure { margin: 0; }
 figcaption { font-size: 13px; color: #555; text-align: center; }
