@@ -472,8 +472,8 @@ std::string mathAsText(const std::string& latex) { return joined(mathRuns(latex)
 
 namespace {
 
-// Where a formula may break, weakest first; a formula breaks at a kind only when its part at the
-// kind before does not fit a line of its own (TeX's display-math conventions).
+// Where a line may break, most willingly first: a formula breaks at a kind only where its part
+// between breaks of the kinds before does not fit a line of its own (display math as TeX sets it).
 enum Glue : int {
   kFreeBreak = 0,    // between words, or a wide gap (\quad) between clauses of a formula
   kBeforeRelation,   // before =, ≈, ≤, ... or after a comma, outside brackets
@@ -520,10 +520,8 @@ std::vector<LaidLine> wrapSpans(const std::vector<TextSpan>& spans, float width,
     else
       pieces.push_back({span, text, 0.0f, 0.0f});
   };
-  const auto startUnit = [&](int glue) {
-    if (units.back().trail.empty()) return;
-    units.emplace_back();
-    units.back().glue = glue;
+  const auto startUnit = [&] {  // a new unit after spaces, at a free break
+    if (!units.back().trail.empty()) units.emplace_back();
   };
   int depth = 0;                   // brackets open in the current formula
   bool inBars = false, inNorm = false;  // inside |...|, ‖...‖
@@ -531,15 +529,15 @@ std::vector<LaidLine> wrapSpans(const std::vector<TextSpan>& spans, float width,
   for (size_t k = 0; k < spans.size(); ++k) {
     const std::string& t = spans[k].text;
     if (spans[k].style == SpanStyle::Math) {
-      // A formula is glued to its neighbours. Outside brackets it may break at a wide gap (\quad,
-      // two spaces or more) freely, and at a space before a relation, an operator or a factor when
-      // it must; never after an operator.
+      // A formula is glued to its neighbours. Outside brackets and scripts it may break at a wide gap
+      // (\quad, two spaces or more) freely, and at a space before a relation, an operator or a factor
+      // when it must; never after an operator.
       const std::vector<std::string> cps = splitCodePoints(t);
       std::string run;  // the text since the last break
       for (size_t i = 0; i < cps.size(); ++i) {
         const std::string& c = cps[i];
         const bool space = c == " " || c == "\u2003";
-        if (!space || depth > 0 || inBars || inNorm || lastBase.empty()) {
+        if (!space || depth > 0 || inBars || inNorm || lastBase.empty() || spans[k].script != 0) {
           depth += isOneOf(c, {"(", "[", "{", "⟨"}) ? 1 : isOneOf(c, {")", "]", "}", "⟩"}) ? -1 : 0;
           inBars = inBars != (c == "|");
           inNorm = inNorm != (c == "‖");
@@ -564,7 +562,7 @@ std::vector<LaidLine> wrapSpans(const std::vector<TextSpan>& spans, float width,
         if (glue < 0) {
           run += gap;
         } else {
-          startUnit(kFreeBreak);
+          startUnit();
           put(units.back().pieces, k, run);
           put(units.back().trail, k, gap);
           units.emplace_back();
@@ -574,7 +572,7 @@ std::vector<LaidLine> wrapSpans(const std::vector<TextSpan>& spans, float width,
         i = end - 1;
       }
       if (!run.empty()) {
-        startUnit(kFreeBreak);
+        startUnit();
         put(units.back().pieces, k, run);
       }
       continue;
@@ -593,7 +591,7 @@ std::vector<LaidLine> wrapSpans(const std::vector<TextSpan>& spans, float width,
         put(units.back().trail, k, t.substr(i, end - i));
         i = end;
       } else {
-        startUnit(kFreeBreak);
+        startUnit();
         const size_t end = std::min(t.find_first_of(" \n", i), t.size());
         put(units.back().pieces, k, t.substr(i, end - i));
         i = end;
@@ -633,9 +631,9 @@ std::vector<LaidLine> wrapSpans(const std::vector<TextSpan>& spans, float width,
       if (u.breakAfter) newLine();
     }
   };
-  // Units [a, b), whose inner breaks are all of one kind or weaker: on this line if they fit, else on
-  // the next, shrunk a little if need be; too wide for that, broken at the strongest of their inner
-  // breaks; too wide and unbreakable, alone on a line, shrunk (and maybe still too wide).
+  // Units [a, b): on this line if they fit, else on the next, shrunk a little if need be; too wide
+  // for that, broken at the most willing of their inner breaks, each part laid out the same way; too
+  // wide and unbreakable, alone on a line, shrunk (and maybe still too wide).
   const std::function<void(size_t, size_t)> lay = [&](size_t a, size_t b) {
     const float w = widthOf(a, b);
     if (x > 0.0f && x + w <= width) {
@@ -653,16 +651,16 @@ std::vector<LaidLine> wrapSpans(const std::vector<TextSpan>& spans, float width,
       if (!lines.back().pieces.empty()) newLine();
       return;
     }
-    int strongest = INT_MAX;
-    for (size_t i = a + 1; i < b; ++i) strongest = std::min(strongest, units[i].glue);
-    if (strongest == INT_MAX) {
+    int preferred = INT_MAX;  // the most willing break inside
+    for (size_t i = a + 1; i < b; ++i) preferred = std::min(preferred, units[i].glue);
+    if (preferred == INT_MAX) {
       if (!lines.back().pieces.empty()) newLine();
       place(a, b, std::max(minScale, width / w));
       if (!lines.back().pieces.empty()) newLine();
       return;
     }
     for (size_t from = a, i = a + 1; i <= b; ++i)
-      if (i == b || units[i].glue == strongest) {
+      if (i == b || units[i].glue == preferred) {
         lay(from, i);
         from = i;
       }

@@ -120,6 +120,13 @@ TEST(WrapSpans, ScriptRunsStayWithTheirFormula) {
   EXPECT_EQ(lineText(lines[0]), "word");
   EXPECT_EQ(lineText(lines[1]), "Llocal(p, d) + kr end");
   EXPECT_FLOAT_EQ(lines[1].pieces[2].x, 1.0f + 5 * 0.7f);
+
+  // A script never breaks inside, even where its formula must break.
+  const std::vector<TextSpan> decay = {{"T = e", SpanStyle::Math, 0}, {"−σₐ s", SpanStyle::Math, 1}};
+  const auto narrow = wrapSpans(decay, 3.0f, charWidths);
+  ASSERT_EQ(narrow.size(), 2u);
+  EXPECT_EQ(lineText(narrow[0]), "T");
+  EXPECT_EQ(narrow[1].pieces.back().text, "−σₐ s");
 }
 
 TEST(WrapSpans, AnUnbreakableFormulaWiderThanTheColumnIsShrunkOnItsOwnLine) {
