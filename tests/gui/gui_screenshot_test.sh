@@ -55,6 +55,7 @@ python3 -c "import json,sys; p=json.load(open('$OUT/structure_bsp.json'))['panes
 if "$CHECK" "$OUT/structure_bsp.png" pane 0 "$OUT/bsp_cli.pfm" >/dev/null 2>&1; then
   echo "FAIL: the BSP cells left the picture unchanged"; exit 1
 fi
+"$CHECK" "$OUT/structure_bsp.png" legend 1  # the cells stop above the cost view's legend
 echo "ok: cost view and structure overlay (BVH boxes, BSP cells)"
 # The GPU twin shades like ray casting where nothing casts shadows (a lone lit sphere).
 "$LL" --quiet render data/scenes/tests/sphere_point_light.json -t raycast -a bvh --set intersection=framework \

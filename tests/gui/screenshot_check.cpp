@@ -109,7 +109,7 @@ Rect rectOf(const nlohmann::json& j) { return {j[0].get<double>(), j[1].get<doub
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc < 4) fail("usage: screenshot_check SHOT.png pane|diff|differs ...");
+  if (argc < 4) fail("usage: screenshot_check SHOT.png pane|diff|differs|magenta|legend ...");
   const std::string shotPath = argv[1], mode = argv[2];
   try {
     const Image shot = srgbOf(ll::loadImage(shotPath));
@@ -160,7 +160,24 @@ int main(int argc, char** argv) {
       std::printf("%.4f\n", static_cast<double>(magenta) / static_cast<double>(counted));
       return 0;
     }
-    fail("unknown mode '" + mode + "' (allowed: pane, diff, differs, magenta)");
+    if (mode == "legend") {  // pane N's heatmap legend (the overlay strip along its bottom) shows no structure lines
+      const Rect r = rectOf(side["panes"].at(static_cast<size_t>(std::stoi(argv[3])))["rect"]);
+      const Rect* legend = nullptr;
+      for (const Rect& o : overlays)
+        if (std::abs(o[0] - r[0]) < 1 && std::abs(o[2] - r[2]) < 1 && std::abs(o[1] + o[3] - r[1] - r[3]) < 1) legend = &o;
+      if (!legend) fail("pane " + std::string(argv[3]) + " has no legend strip");
+      // The overlay's interior boxes are cyan (80, 220, 255); the legend's colours (inferno, white) never are.
+      long cyan = 0;
+      for (int y = static_cast<int>((*legend)[1]) + 1; y < static_cast<int>((*legend)[1] + (*legend)[3]) && y < shot.height(); ++y)
+        for (int x = static_cast<int>((*legend)[0]); x < static_cast<int>((*legend)[0] + (*legend)[2]) && x < shot.width(); ++x) {
+          const Rgb c = shot.at(x, y);
+          cyan += c.g > c.r + 0.2f && c.b > c.r + 0.2f;
+        }
+      if (cyan > 0) fail("structure lines cross pane " + std::string(argv[3]) + "'s legend (" + std::to_string(cyan) + " cyan pixels)");
+      std::printf("ok: pane %s's legend is clear of structure lines\n", argv[3]);
+      return 0;
+    }
+    fail("unknown mode '" + mode + "' (allowed: pane, diff, differs, magenta, legend)");
   } catch (const std::exception& e) {
     fail(e.what());
   }
