@@ -38,6 +38,8 @@ Command addCompareCommand(CLI::App& app, const GlobalOptions&) {
     if (!std::isnan(o->max) && o->metric.empty()) throwUserError("compare: --max needs --metric");
     nlohmann::json j = nlohmann::json::object();
     for (const std::string& name : metricNames()) j[name] = metricValue(e, name);
+    j["mean"] = e.meanA;  // over pixels and channels: a brightness check (a furnace's 1 / (1 - albedo))
+    j["reference_mean"] = e.meanB;
     if (!o->diff.empty()) {
       float used = 0.0f;
       const Image heat = differenceHeatmap(a, b, o->relative ? DiffMode::Relative : DiffMode::Absolute, 0.0f, &used);
@@ -51,6 +53,7 @@ Command addCompareCommand(CLI::App& app, const GlobalOptions&) {
       std::printf("%s %.6g\n", o->metric.c_str(), metricValue(e, o->metric));
     } else {
       for (const std::string& name : metricNames()) std::printf("%-7s %.6g\n", name.c_str(), metricValue(e, name));
+      std::printf("mean    %.6g (reference %.6g)\n", e.meanA, e.meanB);
       if (!o->diff.empty())
         std::printf("diff    %s (black = 0, bright = %.4g)\n", o->diff.c_str(), j["diff_scale_max"].get<double>());
     }

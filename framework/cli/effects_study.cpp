@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "cli/study_stubs.h"
 #include "core/error.h"
 #include "core/markup.h"
 #include "core/progress.h"
@@ -50,7 +51,7 @@ struct SceneResult {
 // Renders `technique` (its verdict's parameters) at width x height with `spp` passes; the seconds of its
 // preparation and of its passes.
 Image render(const Scene& scene, const Accelerator& accel, const std::string& technique, int width, int height,
-             int spp, uint64_t seed, double* prepareSeconds, double* renderSeconds) {
+             int spp, uint64_t seed, double* prepareSeconds, double* renderSeconds, StudyStubs& stubs) {
   const std::string name = technique.substr(0, technique.find(' '));
   const TechniqueInfo& t = findTechnique(name);
   ParamSet params(t.name, t.params);
@@ -64,6 +65,7 @@ Image render(const Scene& scene, const Accelerator& accel, const std::string& te
   rs.seed = seed;
   RenderJob job(scene, accel, *instance, params, rs);
   job.run();
+  stubs.add(job.stats().missingTasks);
   *prepareSeconds = job.stats().prepareSeconds;
   *renderSeconds = job.stats().renderSeconds;
   return job.frame().resolve(false);
@@ -164,6 +166,7 @@ void runEffectsStudy(const EffectsStudyOptions& o, bool quiet) {
 
   std::vector<SceneResult> results;
   ProgressBar bar("study effects", static_cast<double>(scenes.size()), quiet);
+  StudyStubs stubs;
   for (size_t si = 0; si < scenes.size(); ++si) {
     const Scene scene = loadScene(scenes[si]);
     const AcceleratorInfo& a = findAccelerator("bvh");
@@ -178,7 +181,7 @@ void runEffectsStudy(const EffectsStudyOptions& o, bool quiet) {
     const int width = r.report.width, height = r.report.height;
     double prepare = 0.0, passes = 0.0;
     const Image truth =
-        render(scene, *accel, r.report.probeTechnique, width, height, o.referenceSpp, 1000003, &prepare, &passes);
+        render(scene, *accel, r.report.probeTechnique, width, height, o.referenceSpp, 1000003, &prepare, &passes, stubs);
     r.truthSeconds = prepare + passes;
     const double pixelRatio = static_cast<double>(scene.camera.width) * static_cast<double>(scene.camera.height) /
                               (static_cast<double>(width) * static_cast<double>(height));
@@ -200,7 +203,7 @@ void runEffectsStudy(const EffectsStudyOptions& o, bool quiet) {
         TechniqueRun run;
         run.technique = v.technique;
         run.passes = count;
-        const Image image = render(scene, *accel, v.technique, width, height, count, 1, &prepare, &passes);
+        const Image image = render(scene, *accel, v.technique, width, height, count, 1, &prepare, &passes, stubs);
         run.seconds = prepare + passes;
         run.cameraSeconds = prepare + passes * pixelRatio;
         run.relmse = compareImages(image, truth).relmse;
@@ -230,7 +233,9 @@ void runEffectsStudy(const EffectsStudyOptions& o, bool quiet) {
   const std::string htmlPath = (fs::path(o.out) / "effects.html").string();
   std::ofstream page(htmlPath);
   if (!page) throwUserError("study effects: cannot write " + htmlPath);
-  page << html(results, o.tolerance);
+  std::string text = html(results, o.tolerance);
+  text.insert(text.find("</h1>") + 5, stubs.html());  // under the title, where it is read
+  page << text;
 
   for (const SceneResult& r : results) {
     std::printf("%s: ", r.scene.c_str());
@@ -258,6 +263,7 @@ void runEffectsStudy(const EffectsStudyOptions& o, bool quiet) {
     std::printf("\n");
   }
   std::printf("wrote %s and %s\n", csvPath.c_str(), htmlPath.c_str());
+  stubs.print();
 }
 
 }  // namespace ll::cli

@@ -19,6 +19,7 @@
 #include "render/cost_image.h"
 #include "render/light_path_mosaic.h"
 #include "render/render_job.h"
+#include "tasks/task_modes.h"
 
 namespace ll::cli {
 
@@ -141,8 +142,7 @@ Command addRenderCommand(CLI::App& app, const GlobalOptions& global) {
     }
     for (const auto& [id, what] : stats.missingTasks)
       std::fprintf(stderr, "lightlab: %s not implemented: %s -- %s\n", id.c_str(), what.c_str(),
-                   stats.exactFallbacks.count(id) ? "its reference stood in (the same picture)"
-                                                  : "its reference stood in; those pixels are striped magenta");
+                   tasks::stubOutcome(id, stats.exactFallbacks.count(id) > 0).c_str());
     for (const auto& [id, what] : stats.taskViolations)
       std::fprintf(stderr, "lightlab: %s: %s\n", id.c_str(), what.c_str());
     if (!stats.referenceTasks.empty())

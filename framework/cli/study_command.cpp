@@ -24,6 +24,7 @@
 #include "cli/commands.h"
 #include "cli/effects_study.h"
 #include "cli/scene_setup.h"
+#include "cli/study_stubs.h"
 #include "core/base64.h"
 #include "core/error.h"
 #include "core/progress.h"
@@ -135,8 +136,10 @@ Curve parseCurve(const std::string& spec) {
   return c;
 }
 
-// One render: the study's settings with `changes` (name=value; "spp" and "accel" are ours).
-Image render(const StudyOptions& o, const std::string& curve, const std::vector<std::string>& changes, Run* run) {
+// One render: the study's settings with `changes` (name=value; "spp" and "accel" are ours). The stubs it
+// ran go into `stubs`.
+Image render(const StudyOptions& o, const std::string& curve, const std::vector<std::string>& changes, Run* run,
+             StudyStubs& stubs) {
   const Curve parsed = parseCurve(curve);
   const std::string& technique = parsed.technique;
   std::string accel = o.accelerator;
@@ -178,6 +181,7 @@ Image render(const StudyOptions& o, const std::string& curve, const std::vector<
   RenderJob job(s.scene, *s.accel, *t, s.techniqueParams, settings);
   const Timer timer;
   job.run();
+  stubs.add(job.stats().missingTasks);
   if (run) {
     run->buildSeconds = s.buildSeconds;
     run->renderSeconds = timer.seconds();
@@ -338,6 +342,7 @@ Command addStudyCommand(CLI::App& app, const GlobalOptions& global) {
     if (ec) throwUserError("study: cannot create " + o->out + ": " + ec.message());
 
     // The reference.
+    StudyStubs stubs;
     Image reference;
     if (!o->reference.empty()) {
       reference = loadImage(o->reference);
@@ -352,7 +357,7 @@ Command addStudyCommand(CLI::App& app, const GlobalOptions& global) {
         reference = loadImage(cached);
         if (!global.quiet) std::fprintf(stderr, "study: reference from the cache %s\n", cached.c_str());
       } else {
-        reference = render(*o, technique, changes, nullptr);
+        reference = render(*o, technique, changes, nullptr, stubs);
         if (!global.quiet) std::fprintf(stderr, "study: reference rendered (%s, %d spp)\n", technique.c_str(), spp);
         if (!cached.empty()) {
           std::error_code ignored;  // a cache that cannot be written only costs time next run
@@ -370,7 +375,7 @@ Command addStudyCommand(CLI::App& app, const GlobalOptions& global) {
         Run run;
         run.technique = technique;
         run.value = v;
-        const Image image = render(*o, technique, {knob + "=" + v}, &run);
+        const Image image = render(*o, technique, {knob + "=" + v}, &run, stubs);
         if (image.width() != reference.width() || image.height() != reference.height())
           throwUserError("study: the reference is " + std::to_string(reference.width()) + "x" +
                          std::to_string(reference.height()) + ", the renders " + std::to_string(image.width()) + "x" +
@@ -411,6 +416,7 @@ Command addStudyCommand(CLI::App& app, const GlobalOptions& global) {
             "figure{display:inline-block;margin:6px}img{image-rendering:pixelated;width:200px}figcaption{font-size:"
             "12px;text-align:center}</style></head><body>\n<h1>"
          << title << "</h1>\n"
+         << stubs.html()
          << logLogSvg(series, title, "seconds (accelerator build + render)", "relMSE against the reference")
          << "<table><tr><th>technique</th><th>" << knob
          << "</th><th>seconds</th><th>build</th><th>render</th><th>rays</th><th>relMSE</th><th>RMSE</th><th>SSIM</th></tr>\n";
@@ -440,6 +446,7 @@ Command addStudyCommand(CLI::App& app, const GlobalOptions& global) {
       std::printf("%-12s %s=%-8s %9.4f s  relMSE %.3g  SSIM %.4f\n", r.technique.c_str(), knob.c_str(), r.value.c_str(),
                   r.buildSeconds + r.renderSeconds, r.error.relmse, r.error.ssim);
     std::printf("wrote %s and %s\n", csvPath.c_str(), htmlPath.c_str());
+    stubs.print();
   };
 }
 

@@ -312,11 +312,12 @@ void yourCodeSection(AppState& app) {
   if (!student) return;
   drawHotReloadStatus(app);
 
-  std::set<std::string> missing, violations;
+  std::set<std::string> missing, violations, ran;
   for (int i = 0; i < kMaxPanes; ++i)
     if (paneActive(app, i)) {
       for (const auto& [id, what] : app.panes[static_cast<size_t>(i)].shown.missingTasks) missing.insert(id);
       for (const auto& [id, what] : app.panes[static_cast<size_t>(i)].shown.taskViolations) violations.insert(id);
+      for (const auto& [id, byReference] : app.panes[static_cast<size_t>(i)].shown.tasksRan) ran.insert(id);
     }
   ImGui::TextDisabled("Tick a task to see its reference:");
   helpMarker(
@@ -348,14 +349,17 @@ void yourCodeSection(AppState& app) {
     }
     recordWidget(app, std::string("task:") + info.id);
     ImGui::SameLine();
+    // "yours" only for code the panes ran: a stub the panes never call is not known to be one.
     const char* state = reference                ? "reference"
                         : violations.count(info.id) ? "breaks a rule"
                         : missing.count(info.id)    ? "stub (reference shown)"
-                                                     : "yours";
+                        : ran.count(info.id)        ? "yours"
+                                                     : "not run by these panes";
     const ImVec4 colour = reference                  ? ImVec4(0.6f, 0.8f, 1, 1)
                           : violations.count(info.id) ? ImVec4(1, 0.4f, 0.4f, 1)
                           : missing.count(info.id)    ? ImVec4(1, 0.4f, 0.9f, 1)
-                                                       : ImVec4(0.6f, 1, 0.6f, 1);
+                          : ran.count(info.id)        ? ImVec4(0.6f, 1, 0.6f, 1)
+                                                       : ImVec4(0.6f, 0.6f, 0.65f, 1);
     ImGui::PushStyleColor(ImGuiCol_Text, colour);
     ImGui::TextWrapped("%s %s: %s", info.id, info.title, state);
     ImGui::PopStyleColor();

@@ -166,10 +166,11 @@ std::vector<std::string> paneCaption(const AppState& app, int index, const std::
                     (s.view == PaneView::LightPaths ? "  |  split by light path" : "") +
                     (differs.empty() ? "" : "  |  " + differs));
   }
-  // The student tree: whose code this picture ran, for the tasks in focus.
+  // The student tree: whose code this picture ran, for the tasks in focus. Where a stub ran, the
+  // reference answered for it.
   std::vector<std::string> yours, reference;
   for (const auto& [id, byReference] : s.tasksRan)
-    if (inFocus(app, id)) (byReference ? reference : yours).push_back(id);
+    if (inFocus(app, id)) (byReference || s.missingTasks.count(id) ? reference : yours).push_back(id);
   if (!yours.empty() || !reference.empty())
     lines.push_back((yours.empty() ? std::string() : "your " + joinNames(yours, " ")) +
                     (yours.empty() || reference.empty() ? "" : "  |  ") +

@@ -80,4 +80,11 @@ std::string referenceList() {
   return joinNames(ids, ",");
 }
 
+std::string stubOutcome(const std::string& id, bool sameImage, bool striped) {
+  const int t = findTask(id);
+  const std::string stripes = sameImage ? " (the same picture)" : striped ? "; those pixels are striped magenta" : "";
+  if (t >= 0 && mode(t) == Mode::Student) return "your stub ran (--isolate)" + stripes;
+  return "its reference stood in" + stripes;
+}
+
 }  // namespace ll::tasks

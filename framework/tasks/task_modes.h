@@ -38,4 +38,10 @@ LIGHTLAB_FRAMEWORK_ONLY void useReferences(const std::string& list);
 // The IDs in Reference mode, "A2.3,A2.5" (empty if none).
 LIGHTLAB_FRAMEWORK_ONLY std::string referenceList();
 
+// What happened where task `id`'s stub ran, for a message after "A6.4 not implemented: ... --":
+// under --isolate the stub's own placeholder ("your stub ran (--isolate)"), else its reference
+// answered ("its reference stood in"); then whether its pixels are striped (`striped`, where the
+// caller stripes them) or the picture is the same (`sameImage`, a stub with an exact fallback).
+LIGHTLAB_FRAMEWORK_ONLY std::string stubOutcome(const std::string& id, bool sameImage, bool striped = true);
+
 }  // namespace ll::tasks

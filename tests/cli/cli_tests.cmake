@@ -89,6 +89,12 @@ set_tests_properties(cli.render.cornell_box_stats PROPERTIES DEPENDS cli.render.
 add_test(NAME cli.compare.identical
          COMMAND ${LL} compare ${OUT}/cornell.png ${OUT}/cornell.png --metric rmse --max 0 --diff ${OUT}/diff.png)
 set_tests_properties(cli.compare.identical PROPERTIES DEPENDS cli.render.cornell_box PASS_REGULAR_EXPRESSION "rmse 0")
+# The white furnace's analytic answer, read as `compare` prints an image's mean: Le / (1 - a) = 5 within 1 %.
+add_test(NAME cli.render.furnace
+         COMMAND ${LL} --quiet render ${SCENES}/tests/furnace.json -t path --spp 64 --set max_depth=256 -o ${OUT}/furnace.pfm)
+add_test(NAME cli.compare.furnace_mean COMMAND ${LL} compare ${OUT}/furnace.pfm ${OUT}/furnace.pfm)
+set_tests_properties(cli.compare.furnace_mean PROPERTIES DEPENDS cli.render.furnace
+                     PASS_REGULAR_EXPRESSION "mean +(4\\.9[5-9]|5\\.0[0-4])[0-9]* \\(reference")
 add_test(NAME cli.render.obj_scene
          COMMAND ${LL} --quiet render ${SCENES}/tests/obj_scene/cube.obj --width 64 -o ${OUT}/cube.pfm)
 add_test(NAME cli.info.cornell_json
