@@ -142,7 +142,7 @@ Command addRenderCommand(CLI::App& app, const GlobalOptions& global) {
     }
     for (const auto& [id, what] : stats.missingTasks)
       std::fprintf(stderr, "lightlab: %s not implemented: %s -- %s\n", id.c_str(), what.c_str(),
-                   tasks::stubOutcome(id, stats.exactFallbacks.count(id) > 0).c_str());
+                   tasks::stubOutcome(id, stats.exactFallbacks.count(id) > 0, job.frame().anyStub()).c_str());
     for (const auto& [id, what] : stats.taskViolations)
       std::fprintf(stderr, "lightlab: %s: %s\n", id.c_str(), what.c_str());
     if (!stats.referenceTasks.empty())
