@@ -140,9 +140,10 @@ Command addRenderCommand(CLI::App& app, const GlobalOptions& global) {
       if (!out) throwUserError(o->statsPath + ": cannot write statistics file");
       out << stats.toJson().dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
     }
+    const bool striped = !stats.missingTasks.empty() && job.frame().anyStub();  // one scan of the frame
     for (const auto& [id, what] : stats.missingTasks)
       std::fprintf(stderr, "lightlab: %s not implemented: %s -- %s\n", id.c_str(), what.c_str(),
-                   tasks::stubOutcome(id, stats.exactFallbacks.count(id) > 0, job.frame().anyStub()).c_str());
+                   tasks::stubOutcome(id, stats.exactFallbacks.count(id) > 0, striped).c_str());
     for (const auto& [id, what] : stats.taskViolations)
       std::fprintf(stderr, "lightlab: %s: %s\n", id.c_str(), what.c_str());
     if (!stats.referenceTasks.empty())

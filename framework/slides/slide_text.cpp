@@ -5,6 +5,7 @@
 #include <climits>
 #include <cstring>
 #include <map>
+#include <set>
 #include <string_view>
 
 #include <md4c.h>
@@ -421,18 +422,15 @@ size_t codePoints(const std::string& s) {
 // a comma or a semicolon takes none before it.
 void tidySpaces(Runs& runs) {
   constexpr std::string_view kEm = "\u2003", kThin = "\u2009";
-  const auto endsWith = [](const std::string& s, std::string_view t) { return s.ends_with(t); };
   std::string* last = nullptr;  // the text written so far, across runs
   for (MathRun& r : runs) {
     std::string out;
     for (const std::string& cp : splitCodePoints(r.text)) {
-      const std::string& before = out.empty() && last ? *last : out;
-      const bool afterSpace = endsWith(before, " ") || endsWith(before, kEm) || endsWith(before, kThin);
-      if (cp == " " && (afterSpace || endsWith(before, "(") || endsWith(before, "["))) continue;
-      if (cp == kEm || cp == "," || cp == ";") {  // punctuation takes no space before it
-        std::string& b = out.empty() && last ? *last : out;
-        while (endsWith(b, " ")) b.pop_back();
-      }
+      std::string& before = out.empty() && last ? *last : out;
+      const bool afterSpace = before.ends_with(' ') || before.ends_with(kEm) || before.ends_with(kThin);
+      if (cp == " " && (afterSpace || before.ends_with('(') || before.ends_with('['))) continue;
+      if (cp == kEm || cp == "," || cp == ";")  // punctuation takes no space before it
+        while (before.ends_with(' ')) before.pop_back();
       out += cp;
     }
     r.text = std::move(out);
@@ -492,10 +490,15 @@ bool isOperator(const std::string& cp) { return isOneOf(cp, {"+", "−", "·", "
 bool bindsForward(const std::string& cp) {
   return isRelation(cp) || isOperator(cp) || isOneOf(cp, {"/", "∑", "∏", "∫", "√", "(", "[", "{", "⟨"});
 }
-// Unicode sub- and superscript characters: a formula's last base character is before them.
+// The Unicode sub- and superscript characters mathRuns writes: a formula's last base character is before them.
 bool isScriptCharacter(const std::string& cp) {
-  static const std::string scripts = "₀₁₂₃₄₅₆₇₈₉₊₋₌₍₎ₐₑₒₓₕₖₗₘₙₚₛₜᵢⱼᵣᵤᵥ⁰¹²³⁴⁵⁶⁷⁸⁹⁺⁻⁼⁽⁾ⁿⁱ";
-  return cp.size() > 1 && scripts.find(cp) != std::string::npos;
+  static const std::set<std::string> scripts = [] {
+    std::set<std::string> all;
+    for (const auto* table : {&subscripts(), &superscripts()})
+      for (const auto& [plain, script] : *table) all.insert(script);
+    return all;
+  }();
+  return scripts.count(cp) > 0;
 }
 
 }  // namespace
