@@ -409,7 +409,8 @@ void refreshPanes(AppState& app) {
             });
   }
 
-  // Errors against the reference pane.
+  // Errors against the reference pane, on the pictures without stub stripes (PaneSnapshot::measured():
+  // a stripe marks where a stub ran, it is not radiance).
   const int ref = app.compare.reference;
   for (int i = 0; i < kMaxPanes; ++i) {
     PaneState& pane = app.panes[static_cast<size_t>(i)];
@@ -447,7 +448,7 @@ void refreshPanes(AppState& app) {
         (pane.historyVersions[0] != pane.shown.version || pane.historyVersions[1] != refShot->version)) {
       pane.historyVersions[0] = pane.shown.version;
       pane.historyVersions[1] = refShot->version;
-      bg.post("history " + std::to_string(i), [h = pane.shown.history, b = refShot->image, mail = pane.historyMail] {
+      bg.post("history " + std::to_string(i), [h = pane.shown.history, b = refShot->measured(), mail = pane.historyMail] {
         std::vector<std::pair<double, double>> curve;
         for (const auto& [t, image] : h)
           if (image->width() == b->width() && image->height() == b->height()) curve.emplace_back(t, relativeMse(*image, *b));
@@ -459,11 +460,11 @@ void refreshPanes(AppState& app) {
     pane.errorVersions[0] = pane.shown.version;
     pane.errorVersions[1] = refShot->version;
     bg.post("error " + std::to_string(i),
-            [a = pane.shown.image, b = refShot->image, mail = pane.errorMail, t = pane.shown.seconds,
+            [a = pane.shown.measured(), b = refShot->measured(), mail = pane.errorMail, t = pane.shown.seconds,
              req = pane.shown.imageRequest] { mail->put({compareImages(*a, *b), t, req}); });
   }
 
-  // The difference heatmap of A against B.
+  // The difference heatmap of A against B, without stripes as the errors.
   DiffState& d = app.diff;
   if (app.compare.mode != CompareMode::Difference) return;
   const int a = app.compare.paneA, b = app.compare.paneB;
@@ -483,7 +484,7 @@ void refreshPanes(AppState& app) {
   d.mode = app.compare.diff;
   d.requestedMax = app.compare.diffMax;
   bg.post("diff",
-          [ia = sa.image, ib = sb.image, mode = d.mode, max = d.requestedMax, mail = d.mail] {
+          [ia = sa.measured(), ib = sb.measured(), mode = d.mode, max = d.requestedMax, mail = d.mail] {
             DiffState::Result r;
             r.image = encodeForDisplay(differenceHeatmap(*ia, *ib, mode, max, &r.usedMax), 0.0f);
             mail->put(std::move(r));

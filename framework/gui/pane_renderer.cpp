@@ -183,7 +183,10 @@ void PaneRenderer::render(const RenderRequest& request, uint64_t id) {
   const Timer requestTimer;  // every phase counts in the pane's time
   // A switch of technique or view: never the old picture under the new name.
   const std::string shows = viewShows(request.view, request.technique, request.accelerator);
-  if (s.image && s.imageShows != shows) s.image.reset();
+  if (s.image && s.imageShows != shows) {
+    s.image.reset();
+    s.unstriped.reset();
+  }
   if (s.phase != PaneSnapshot::Phase::Building) s.phase = PaneSnapshot::Phase::Rendering;
   publish(s);
   // What the technique and the tiles report (ProgressBar, reportPhase) goes to this pane.
@@ -225,6 +228,9 @@ void PaneRenderer::render(const RenderRequest& request, uint64_t id) {
     lastPassSeconds_ = -1.0;
   }
 
+  // The preview's preparation (radiosity's solve, which the full-size job then finds cached): shown
+  // as preparation, not as the preview.
+  double previewPrepareSeconds = 0.0;
   // Runs one job, publishing after each pass; false if cancelled.
   const auto runJob = [&](const RenderSettings& settings, bool preview) {
     const auto technique = techInfo.make();
@@ -259,9 +265,11 @@ void PaneRenderer::render(const RenderRequest& request, uint64_t id) {
       if (request.view == PaneView::LightPaths && job.frame().keepsLightPaths()) {
         LightPathMosaic mosaic = lightPathMosaic(job.frame());
         s.image = std::make_shared<const Image>(std::move(mosaic.image));
+        s.unstriped.reset();
         s.lightPathTiles = std::move(mosaic.tiles);
       } else {
         s.image = std::make_shared<const Image>(job.frame().resolve());
+        s.unstriped = job.frame().anyStub() ? std::make_shared<const Image>(job.frame().resolve(false)) : nullptr;
       }
       s.imageShows = shows;
       s.imageRequest = id;
@@ -272,16 +280,18 @@ void PaneRenderer::render(const RenderRequest& request, uint64_t id) {
       s.seconds = requestTimer.seconds();
       s.stats = job.stats();
       if (preview) {
-        s.previewSeconds = timer.seconds();
+        previewPrepareSeconds = job.stats().prepareSeconds;
+        s.prepareSeconds = previewPrepareSeconds;
+        s.previewSeconds = timer.seconds() - previewPrepareSeconds;
       } else {
         if (request.keepHistory) {  // log-spaced: the point before the latest stays if 1.5x older
           auto& h = s.history;
           if (h.size() >= 2 && s.seconds < 1.5 * h[h.size() - 2].first)
-            h.back() = {s.seconds, s.image};
+            h.back() = {s.seconds, s.measured()};
           else
-            h.emplace_back(s.seconds, s.image);
+            h.emplace_back(s.seconds, s.measured());
         }
-        s.prepareSeconds = job.stats().prepareSeconds;
+        s.prepareSeconds = previewPrepareSeconds + job.stats().prepareSeconds;
         s.passSeconds = job.stats().renderSeconds;
       }
       s.missingTasks = job.taskLog().missing();
@@ -330,6 +340,7 @@ void PaneRenderer::renderCost(const RenderRequest& request, uint64_t id, PaneSna
   }
   if (counts.empty()) return;
   s.image = std::make_shared<const Image>(std::move(counts));
+  s.unstriped.reset();
   s.imageShows = request.accelerator + " cost";
   s.imageRequest = id;
   s.preview = false;

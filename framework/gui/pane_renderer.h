@@ -54,6 +54,10 @@ struct PaneSnapshot {
   uint64_t imageRequest = 0;           // the submit() the image was rendered for
   uint64_t starts = 0;                 // renders the worker began: increases on every restart
   std::shared_ptr<const Image> image;  // linear radiance, stub pixels striped magenta
+  // Only while `image` has stub stripes: the same radiance without them, as the reference (or, with a
+  // task isolated, the stub) answered for those pixels. Errors and the plot measure measured().
+  std::shared_ptr<const Image> unstriped;
+  std::shared_ptr<const Image> measured() const { return unstriped ? unstriped : image; }
   bool preview = false;                // image is the quick low-resolution first look
   PaneView view = PaneView::Image;     // what `image` holds: radiance, per-pixel counts, or the light-path mosaic
   std::vector<MosaicTile> lightPathTiles;  // view LightPaths: where each class sits in `image` (empty: not split)
@@ -73,7 +77,8 @@ struct PaneSnapshot {
   double phaseFraction = -1.0;
   std::chrono::steady_clock::time_point phaseStarted;
   // `seconds` broken down: this request's accelerator build (0 when cached), the
-  // low-resolution preview, the technique's preparation (radiosity's solve) and the passes.
+  // low-resolution preview's passes, the technique's preparation (radiosity's solve, whichever of the
+  // preview and the full-size job ran it) and the passes.
   double requestBuildSeconds = 0.0, previewSeconds = 0.0, prepareSeconds = 0.0, passSeconds = 0.0;
   double buildSeconds = 0.0;  // accelerator build of the current scene
   RenderStats stats;          // as of the last completed pass
@@ -82,7 +87,7 @@ struct PaneSnapshot {
   std::map<std::string, std::string> taskViolations;  // task id -> the rule its code broke
   std::map<std::string, bool> tasksRan;  // student tasks the render called -> answered by the reference
   std::string error;                     // set when phase == Failed
-  // With RenderRequest::keepHistory: (seconds, image) of this request's passes, each
+  // With RenderRequest::keepHistory: (seconds, measured()) of this request's passes, each
   // at least 1.5x the time of the one before it, and the latest pass last.
   std::vector<std::pair<double, std::shared_ptr<const Image>>> history;
 };

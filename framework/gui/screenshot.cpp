@@ -98,6 +98,10 @@ std::string saveScreenshotSidecar(const AppState& app, const std::string& path, 
             {"image_shows", p.shown.imageShows},
             {"error_history", p.errorHistory}};
     if (p.shown.image) pj["image_size"] = {p.shown.image->width(), p.shown.image->height()};
+    pj["striped"] = p.shown.unstriped != nullptr;  // the picture has stub stripes
+    // Against the reference pane, as the caption's "vs B" line (null while not measured).
+    pj["vs_reference"] = p.hasError ? json{{"relmse", p.error.relmse}, {"rmse", p.error.rmse}, {"ssim", p.error.ssim}}
+                                    : json(nullptr);
     j["panes"].push_back(pj);
   }
   j["compare"] = {{"mode", compareModeName(app.compare.mode)},

@@ -182,10 +182,17 @@ std::vector<std::string> paneCaption(const AppState& app, int index, const std::
     case PaneSnapshot::Phase::Done: {
       lines.push_back(phaseLine(s));
       // Where the time went, once more than the passes took it.
+      // Only the parts that took time: a narrow pane wraps this line, and every line hides picture.
       if (s.phase == PaneSnapshot::Phase::Done && s.seconds - s.passSeconds > 0.05) {
-        std::snprintf(buf, sizeof buf, "time: build %.2f  + preview %.2f  + prepare %.2f  + passes %.2f s",
-                      s.requestBuildSeconds, s.previewSeconds, s.prepareSeconds, s.passSeconds);
-        lines.emplace_back(buf);
+        std::string line = "time:";
+        for (const auto& [name, seconds] : {std::pair{"build", s.requestBuildSeconds}, {"preview", s.previewSeconds},
+                                            {"prepare", s.prepareSeconds}})
+          if (seconds >= 0.005) {
+            std::snprintf(buf, sizeof buf, "%s %s %.2f", line == "time:" ? "" : " +", name, seconds);
+            line += buf;
+          }
+        std::snprintf(buf, sizeof buf, "%s passes %.2f s", line == "time:" ? "" : " +", s.passSeconds);
+        lines.push_back(line + buf);
       }
       break;
     }
@@ -536,19 +543,30 @@ void drawViewportContent(AppState& app, float x, float y, float w, float h) {
       Rect cell = cellOf(i, app.paneCount, area);
       const float bannerW = cell.w - 12.0f;  // the banner spans the cell, under the picture
       cell.h = std::max(cell.h - bannerSpace(app, p, bannerW), 1.0f);
-      // The light-path view's tiles are small: its caption goes above the picture, not over it.
+      const bool current = imageOnScreen(p);
+      const RenderSettings size = app.scene ? renderSettings(app, p) : RenderSettings{};
+      const int imageW = current ? p.texture.width() : size.width, imageH = current ? p.texture.height() : size.height;
+      Rect r = fitImage(cell, imageW, imageH, 6.0f);
+      // Where the caption goes, so that it hides no picture where it can (projector mode draws its big
+      // labels on the picture): beside the picture when the cell has the width to spare, or would
+      // after the picture shrinks to 85 % of its width (a tall cell: panes stacked in a narrow
+      // viewport), the two centred together; else above it for the light-path view, whose tiles are
+      // small; else over the picture's top.
+      const float margin = 6.0f, spare = cell.w - r.w - 3.0f * margin, besideMin = uiPx(190.0f);
+      float besideW = 0.0f;
       std::vector<std::string> captionAbove;
       float aboveHeight = 0.0f;
-      if (p.view == PaneView::LightPaths && !app.projector) {
+      if (!app.projector && cell.w - 3.0f * margin - besideMin >= 0.85f * r.w) {
+        besideW = std::clamp(spare, besideMin, uiPx(320.0f));
+        r = fitImage({cell.x, cell.y, cell.w - besideW - margin, cell.h}, imageW, imageH, margin);
+        r.x = std::floor(cell.x + (cell.w - (r.w + margin + besideW)) / 2.0f);
+      } else if (p.view == PaneView::LightPaths && !app.projector) {
         captionAbove = paneCaption(app, i, differsOf(i));
         aboveHeight = captionHeight(captionAbove, bannerW);
         cell.y += aboveHeight;
         cell.h = std::max(cell.h - aboveHeight, 1.0f);
+        r = fitImage(cell, imageW, imageH, margin);
       }
-      const bool current = imageOnScreen(p);
-      const RenderSettings size = app.scene ? renderSettings(app, p) : RenderSettings{};
-      const Rect r = current ? fitImage(cell, p.texture.width(), p.texture.height(), 6.0f)
-                             : fitImage(cell, size.width, size.height, 6.0f);
       if (current)
         dl->AddImage(p.texture.imguiId(), ImVec2(r.x, r.y), ImVec2(r.x + r.w, r.y + r.h));
       else
@@ -573,7 +591,10 @@ void drawViewportContent(AppState& app, float x, float y, float w, float h) {
         const float py = r.y + app.inspector.pixel.y / static_cast<float>(camera.height) * r.h;
         dl->AddCircle(ImVec2(px, py), 6.0f, IM_COL32(255, 0, 255, 255), 16, 2.0f);
       }
-      if (aboveHeight > 0.0f)
+      if (besideW > 0.0f)
+        captionBox(app.overlayRects, dl, r.x + r.w + margin, r.y, paneCaption(app, i, differsOf(i)),
+                   IM_COL32(0, 0, 0, 170), besideW);
+      else if (aboveHeight > 0.0f)
         captionBox(app.overlayRects, dl, cell.x + 6.0f, r.y - aboveHeight, captionAbove, IM_COL32(0, 0, 0, 170), bannerW);
       else
         caption(i, r, r.w);

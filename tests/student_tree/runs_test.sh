@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The built student tree runs: renders name every missing task and stripe its
 # pixels while the references stand in (the same picture where the reference is
-# exact), the GUI under Xvfb names the missing tasks in its panes, --reference
+# exact), the GUI under Xvfb names the missing tasks in its panes (and measures a
+# striped pane's error on its radiance, not its stripes), --reference
 # gives the solution's picture, and grading every assignment scores 0 with each
 # task "not implemented", without a crash.
 # Usage: runs_test.sh STUDENT_TREE WORKDIR
@@ -79,5 +80,19 @@ if command -v xvfb-run >/dev/null && build/lightlab --help | grep -q '^\s*gui'; 
     grep -q "\"$task\"" "$work/gui.json" || { echo "FAIL: the GUI pane does not name $task as missing"; exit 1; }
   done
   grep -q '"phase": "done"' "$work/gui.json" || { echo "FAIL: the GUI panes did not finish"; exit 1; }
+  # A pane's error against the reference pane measures radiance, not the stripes that mark a stub:
+  # A5's radiosity with its two stubs (the reference answering, striped) against the path tracer.
+  xvfb-run -a -n 171 -s '-noreset -screen 0 1280x800x24' build/lightlab gui --assignment A5 \
+    --screenshot "$work/gui_a5.png" --frames 3 --timeout 600 >/dev/null
+  python3 - "$work/gui_a5.json" <<'PY'
+import json, sys
+a = json.load(open(sys.argv[1]))["panes"][0]
+if a["technique"] != "radiosity" or not a["striped"]:
+    sys.exit(f"FAIL: A5's pane A is {a['technique']}, striped {a['striped']}: expected radiosity with stub stripes")
+e = a["vs_reference"]
+if e is None or not e["relmse"] < 0.1:  # about 0.02 (16 spp of noise); 11 when the stripes were measured
+    sys.exit(f"FAIL: A5's pane A against the path tracer: {e} (relMSE of the stripes, not of the radiance?)")
+print(f"GUI A5: pane A striped, relMSE {e['relmse']:.3f} against the path tracer")
+PY
 fi
 echo "student tree: runs; the references stand in for every stub and each is named (CLI, GUI); grades to 0"
