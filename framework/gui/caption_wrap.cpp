@@ -43,13 +43,14 @@ void fill(const std::vector<std::string>& pieces, const std::string& glue, float
 
 std::vector<std::string> wrapCaptionLine(const std::string& line, float width, const TextWidth& measure) {
   if (measure(line) <= width) return {line};
-  // Fields, with a lone "|" or "/" glued to the field after it.
+  // Fields, with a lone "/" glued to the field after it (a line may start "/  bvh"). A lone "|" only
+  // separates: it stays between two fields on one line, and a line break replaces it.
   std::vector<std::string> fields;
   bool glueNext = false;
   for (std::string& f : splitAt(line, "  ")) {
     if (glueNext) fields.back() += "  " + f;
     else fields.push_back(std::move(f));
-    glueNext = fields.back() == "|" || fields.back() == "/";
+    glueNext = fields.back() == "/";
   }
   // Fields too wide for a line of their own break at single spaces.
   std::vector<std::string> out;
@@ -58,14 +59,21 @@ std::vector<std::string> wrapCaptionLine(const std::string& line, float width, c
     if (!current.empty()) out.push_back(current);
     current.clear();
   };
+  bool bar = false;  // a "|" between the line so far and the next field
   for (const std::string& f : fields) {
+    if (f == "|") {
+      bar = true;
+      continue;
+    }
+    const std::string glue = bar ? "  |  " : "  ";
+    bar = false;
     if (measure(f) > width) {
       flush();
       fill(splitAt(f, " "), " ", width, measure, out);
     } else if (current.empty()) {
       current = f;
-    } else if (measure(current + "  " + f) <= width) {
-      current += "  " + f;
+    } else if (measure(current + glue + f) <= width) {
+      current += glue + f;
     } else {
       flush();
       current = f;

@@ -39,8 +39,10 @@ TEST(CaptionWrap, AFieldWiderThanTheLineBreaksAtItsSpaces) {
   EXPECT_EQ(wrapCaptionLine("reference A4.3_KdTreeBuild", 10, chars), (Lines{"reference", "A4.3_KdTreeBuild"}));
 }
 
-TEST(CaptionWrap, ASeparatorStartsTheNextLine) {
-  EXPECT_EQ(wrapCaptionLine("A  path  /  bvh  |  64 spp", 11, chars), (Lines{"A  path", "/  bvh", "|  64 spp"}));
+// "/" (technique / accelerator) starts the next line; "|" only separates, and a line break does that.
+TEST(CaptionWrap, ASlashStartsTheNextLineABarIsDropped) {
+  EXPECT_EQ(wrapCaptionLine("A  path  /  bvh  |  64 spp", 11, chars), (Lines{"A  path", "/  bvh", "64 spp"}));
+  EXPECT_EQ(wrapCaptionLine("A  path  /  bvh  |  strategy mis", 12, chars), (Lines{"A  path", "/  bvh", "strategy mis"}));
 }
 
 // The time line keeps each term of its sum whole.
@@ -49,7 +51,12 @@ TEST(CaptionWrap, TheTimeLineBreaksBetweenTerms) {
             (Lines{"time: build 0.06  + preview 0.01  + prepare 0.00", "+ passes 0.29 s"}));
 }
 
-TEST(CaptionWrap, NoTextIsLost) {
+TEST(CaptionWrap, ABarBetweenFieldsOnOneLineStays) {
+  EXPECT_EQ(wrapCaptionLine("your A2.4  |  reference A2.1 A2.5", 40, chars), Lines{"your A2.4  |  reference A2.1 A2.5"});
+  EXPECT_EQ(wrapCaptionLine("A  raycast  /  bvh  |  64 spp  |  x", 30, chars), (Lines{"A  raycast  /  bvh  |  64 spp", "x"}));
+}
+
+TEST(CaptionWrap, NoTextButASeparatingBarIsLost) {
   const std::string line = "time: build 0.12 + preview 0.30 + prepare 0.01 + passes 2.40 s";
   for (float width = 1; width < 70; ++width) {
     std::string joined;

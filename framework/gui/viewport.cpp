@@ -58,6 +58,52 @@ Rect fitImage(Rect cell, int imageW, int imageH, float margin) {
           std::floor(fw), std::floor(fh)};
 }
 
+// Where a pane's picture and its caption go in the pane's cell.
+struct PaneLayout {
+  Rect picture;
+  float captionX = 0.0f, captionY = 0.0f, captionWidth = 0.0f;  // width 0: the caption goes over the picture
+};
+
+float captionHeight(const std::vector<std::string>& lines, float width);  // below
+
+// The caption where it hides no picture: beside it when the cell has the width to spare, or would
+// after the picture shrinks to 85 % (a tall cell: panes stacked in a narrow viewport); else above
+// it when the cell has the height (a wide picture in a tall cell), the two centred together; else
+// over the picture's top. smallTiles (the light-path view's mosaic): above even if the picture
+// shrinks more. aboveAtLeast: the height kept above the picture at least (the tallest caption of
+// the panes, so that pictures side by side stay level). No caption lines: the whole cell is the
+// picture's.
+PaneLayout layoutPane(Rect cell, int imageW, int imageH, const std::vector<std::string>& caption, bool smallTiles,
+                      float aboveAtLeast) {
+  const float margin = 6.0f;
+  PaneLayout out;
+  out.picture = fitImage(cell, imageW, imageH, margin);
+  if (caption.empty()) return out;
+  const Rect whole = out.picture;
+  const float besideMin = uiPx(190.0f);
+  if (cell.w - 3.0f * margin - besideMin >= 0.85f * whole.w) {
+    const float width = std::clamp(cell.w - whole.w - 3.0f * margin, besideMin, uiPx(320.0f));
+    Rect& r = out.picture;
+    r = fitImage({cell.x, cell.y, cell.w - width - margin, cell.h}, imageW, imageH, margin);
+    r.x = std::floor(cell.x + (cell.w - (r.w + margin + width)) / 2.0f);
+    out.captionX = r.x + r.w + margin;
+    out.captionY = r.y;
+    out.captionWidth = width;
+    return out;
+  }
+  const float width = cell.w - 2.0f * margin, own = captionHeight(caption, width);
+  const float height = std::max(own, aboveAtLeast);
+  if (smallTiles || cell.h - 2.0f * margin - height >= 0.85f * whole.h) {
+    Rect& r = out.picture;
+    r = fitImage({cell.x, cell.y + height, cell.w, std::max(cell.h - height, 1.0f)}, imageW, imageH, margin);
+    r.y = std::max(std::floor(cell.y + (cell.h - (height + r.h)) / 2.0f + height), cell.y + height);
+    out.captionX = cell.x + margin;
+    out.captionY = r.y - own;
+    out.captionWidth = width;
+  }
+  return out;
+}
+
 ImU32 srgbColor(Rgb linear) {
   const auto c = [](float v) {
     return static_cast<int>(std::lround(linearToSrgb(std::clamp(v, 0.0f, 1.0f)) * 255));
@@ -188,10 +234,10 @@ std::vector<std::string> paneCaption(const AppState& app, int index, const std::
         for (const auto& [name, seconds] : {std::pair{"build", s.requestBuildSeconds}, {"preview", s.previewSeconds},
                                             {"prepare", s.prepareSeconds}})
           if (seconds >= 0.005) {
-            std::snprintf(buf, sizeof buf, "%s %s %.2f", line == "time:" ? "" : " +", name, seconds);
+            std::snprintf(buf, sizeof buf, "%s %s %.2f", line == "time:" ? "" : "  +", name, seconds);
             line += buf;
           }
-        std::snprintf(buf, sizeof buf, "%s passes %.2f s", line == "time:" ? "" : " +", s.passSeconds);
+        std::snprintf(buf, sizeof buf, "%s passes %.2f s", line == "time:" ? "" : "  +", s.passSeconds);
         lines.push_back(line + buf);
       }
       break;
@@ -538,6 +584,14 @@ void drawViewportContent(AppState& app, float x, float y, float w, float h) {
   };
 
   if (app.compare.mode == CompareMode::SideBySide) {
+    // Each pane's caption lines (none in projector mode: its big labels go on the picture), and the
+    // tallest, so that captions above their pictures keep the pictures level.
+    std::vector<std::vector<std::string>> captions(static_cast<size_t>(app.paneCount));
+    float tallest = 0.0f;
+    for (int i = 0; i < app.paneCount && !app.projector; ++i) {
+      captions[static_cast<size_t>(i)] = paneCaption(app, i, differsOf(i));
+      tallest = std::max(tallest, captionHeight(captions[static_cast<size_t>(i)], cellOf(i, app.paneCount, area).w - 12.0f));
+    }
     for (int i = 0; i < app.paneCount; ++i) {
       PaneState& p = app.panes[static_cast<size_t>(i)];
       Rect cell = cellOf(i, app.paneCount, area);
@@ -546,27 +600,9 @@ void drawViewportContent(AppState& app, float x, float y, float w, float h) {
       const bool current = imageOnScreen(p);
       const RenderSettings size = app.scene ? renderSettings(app, p) : RenderSettings{};
       const int imageW = current ? p.texture.width() : size.width, imageH = current ? p.texture.height() : size.height;
-      Rect r = fitImage(cell, imageW, imageH, 6.0f);
-      // Where the caption goes, so that it hides no picture where it can (projector mode draws its big
-      // labels on the picture): beside the picture when the cell has the width to spare, or would
-      // after the picture shrinks to 85 % of its width (a tall cell: panes stacked in a narrow
-      // viewport), the two centred together; else above it for the light-path view, whose tiles are
-      // small; else over the picture's top.
-      const float margin = 6.0f, spare = cell.w - r.w - 3.0f * margin, besideMin = uiPx(190.0f);
-      float besideW = 0.0f;
-      std::vector<std::string> captionAbove;
-      float aboveHeight = 0.0f;
-      if (!app.projector && cell.w - 3.0f * margin - besideMin >= 0.85f * r.w) {
-        besideW = std::clamp(spare, besideMin, uiPx(320.0f));
-        r = fitImage({cell.x, cell.y, cell.w - besideW - margin, cell.h}, imageW, imageH, margin);
-        r.x = std::floor(cell.x + (cell.w - (r.w + margin + besideW)) / 2.0f);
-      } else if (p.view == PaneView::LightPaths && !app.projector) {
-        captionAbove = paneCaption(app, i, differsOf(i));
-        aboveHeight = captionHeight(captionAbove, bannerW);
-        cell.y += aboveHeight;
-        cell.h = std::max(cell.h - aboveHeight, 1.0f);
-        r = fitImage(cell, imageW, imageH, margin);
-      }
+      const std::vector<std::string>& lines = captions[static_cast<size_t>(i)];
+      const PaneLayout layout = layoutPane(cell, imageW, imageH, lines, p.view == PaneView::LightPaths, tallest);
+      const Rect r = layout.picture;
       if (current)
         dl->AddImage(p.texture.imguiId(), ImVec2(r.x, r.y), ImVec2(r.x + r.w, r.y + r.h));
       else
@@ -591,11 +627,9 @@ void drawViewportContent(AppState& app, float x, float y, float w, float h) {
         const float py = r.y + app.inspector.pixel.y / static_cast<float>(camera.height) * r.h;
         dl->AddCircle(ImVec2(px, py), 6.0f, IM_COL32(255, 0, 255, 255), 16, 2.0f);
       }
-      if (besideW > 0.0f)
-        captionBox(app.overlayRects, dl, r.x + r.w + margin, r.y, paneCaption(app, i, differsOf(i)),
-                   IM_COL32(0, 0, 0, 170), besideW);
-      else if (aboveHeight > 0.0f)
-        captionBox(app.overlayRects, dl, cell.x + 6.0f, r.y - aboveHeight, captionAbove, IM_COL32(0, 0, 0, 170), bannerW);
+      if (layout.captionWidth > 0.0f)
+        captionBox(app.overlayRects, dl, layout.captionX, layout.captionY, lines, IM_COL32(0, 0, 0, 170),
+                   layout.captionWidth);
       else
         caption(i, r, r.w);
       paneBanners(dl, app, i, r, cell.x + 6.0f, bannerW);
