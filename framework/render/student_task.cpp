@@ -93,7 +93,7 @@ ScopedTaskLog::~ScopedTaskLog() { tCurrentLog = previous_; }
 TaskLog* currentTaskLog() { return tCurrentLog; }
 
 void reportMissingTask(const char* id, const char* what, bool marksPixels) {
-  tasks::noteStubRan();
+  tasks::noteStubRan(id);
   if (marksPixels) tStubUsed = true;
   recordReported(id);
   if (!tCurrentLog) return;

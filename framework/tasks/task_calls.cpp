@@ -4,6 +4,7 @@
 #include <atomic>
 #include <bitset>
 #include <cstdint>
+#include <cstring>
 #include <mutex>
 
 #include "render/student_task.h"
@@ -14,6 +15,7 @@ namespace ll::tasks {
 namespace {
 constexpr size_t kMaxTasks = 64;
 thread_local bool tStubRan = false;
+thread_local int tInnermost = -1;  // the task of the innermost StudentCall on this thread (-1: none)
 thread_local std::array<uint16_t, kMaxTasks> tRunning{};
 
 std::atomic<uint64_t> gCalled{0};
@@ -21,8 +23,9 @@ std::mutex gViolationsMutex;
 std::map<std::string, std::string> gViolations;
 }  // namespace
 
-StudentCall::StudentCall(int task) : task_(task), savedStub_(tStubRan) {
+StudentCall::StudentCall(int task) : task_(task), savedStub_(tStubRan), savedInnermost_(tInnermost) {
   tStubRan = false;
+  tInnermost = task;
   reentered_ = tRunning[static_cast<size_t>(task)] > 0;
   ++tRunning[static_cast<size_t>(task)];
 }
@@ -30,13 +33,16 @@ StudentCall::StudentCall(int task) : task_(task), savedStub_(tStubRan) {
 StudentCall::~StudentCall() {
   --tRunning[static_cast<size_t>(task_)];
   tStubRan = savedStub_;
+  tInnermost = savedInnermost_;
 }
 
 bool StudentCall::stubRan() const { return tStubRan; }
 
 bool studentCodeRunning(int task) { return task >= 0 && tRunning[static_cast<size_t>(task)] > 0; }
 
-void noteStubRan() { tStubRan = true; }
+void noteStubRan(const char* id) {
+  if (tInnermost >= 0 && std::strcmp(taskCatalog()[static_cast<size_t>(tInnermost)].id, id) == 0) tStubRan = true;
+}
 
 void noteTaskCalled(int task, bool byReference) {
   const uint64_t bit = uint64_t{1} << static_cast<unsigned>(task);

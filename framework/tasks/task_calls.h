@@ -29,6 +29,7 @@ class LIGHTLAB_FRAMEWORK_ONLY StudentCall {
  private:
   int task_;
   bool savedStub_;
+  int savedInnermost_;
   bool reentered_;
 };
 
@@ -43,8 +44,12 @@ LIGHTLAB_FRAMEWORK_ONLY void noteTaskCalled(int task, bool byReference);
 // The IDs of the tasks called since the last call, which clears the record.
 LIGHTLAB_FRAMEWORK_ONLY std::vector<std::string> takeTasksCalled();
 
-// Called by every stub (render/student_task.h): the running call's stub ran.
-LIGHTLAB_FRAMEWORK_ONLY void noteStubRan();
+// Called by every stub report (render/student_task.h): the running call's stub ran, if the report is
+// that call's task. Another task's report does not count: framework code that reports an exact
+// fallback on every query (a BVH built while A4.1 was a stub) inside the student's A3.4 would
+// otherwise make A3.4 look like a stub, and its reference re-run the whole subtree of rays at every
+// bounce (2^depth the rays).
+LIGHTLAB_FRAMEWORK_ONLY void noteStubRan(const char* id);
 
 // A framework function that answers task `taskId` (the watertight triangle
 // test answers A2.3) calls this first in the student tree: used from inside
