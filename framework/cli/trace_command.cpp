@@ -4,12 +4,15 @@
 // (-t whitted), also the whole ray tree of the pixel's sample.
 #include <cstdio>
 #include <iostream>
+#include <set>
 
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.h"
 #include "cli/scene_setup.h"
 #include "core/error.h"
+#include "render/student_task.h"
+#include "tasks/task_modes.h"
 
 namespace ll::cli {
 
@@ -106,6 +109,9 @@ Command addTraceCommand(CLI::App& app, const GlobalOptions&) {
   cmd->add_flag("--json", o->json, "Print JSON");
   return [o]() {
     if (o->pixel.empty() && o->ray.empty()) throwUserError("trace: give --pixel X Y or --ray OX OY OZ DX DY DZ");
+    // The student tasks the trace runs, for the same "not implemented" lines a render prints.
+    TaskLog tasks;
+    const ScopedTaskLog logged(&tasks);
     SceneSetup s = setUpScene(o->scene, o->technique, o->accelerator, o->sets);
     Camera camera = s.scene.camera;
     if (o->width > 0) camera.width = o->width;
@@ -177,6 +183,14 @@ Command addTraceCommand(CLI::App& app, const GlobalOptions&) {
       std::printf("miss (the ray leaves the scene)\n");
     }
     if (tree && !o->json) printTree(*tree);
+    // On stderr, as render's: the stubs this ray (tree) ran, and whose answer it shows.
+    const std::set<std::string> exact = tasks.exact();
+    for (const auto& [id, what] : tasks.missing())
+      std::fprintf(stderr, "lightlab: %s not implemented: %s -- %s\n", id.c_str(), what.c_str(),
+                   tasks::stubOutcome(id, exact.count(id) > 0, false).c_str());
+    for (const auto& [id, what] : tasks.violations()) std::fprintf(stderr, "lightlab: %s: %s\n", id.c_str(), what.c_str());
+    const std::string references = tasks::referenceList();
+    if (!references.empty()) std::fprintf(stderr, "lightlab: by their reference (--reference): %s\n", references.c_str());
   };
 }
 

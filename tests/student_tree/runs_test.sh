@@ -44,6 +44,9 @@ missing "$work/a1.txt" A1.1 A1.2 A1.3 A1.4 A1.5
 build/lightlab --quiet render data/scenes/whitted_1980.json -t whitted -a bvh --width 96 --height 72 -o "$work/a3.png" \
   2>"$work/a3.txt"
 missing "$work/a3.txt" A3.4
+# trace says the same of the ray tree it prints.
+build/lightlab trace data/scenes/whitted_1980.json --pixel 380 200 -t whitted -a bvh >/dev/null 2>"$work/trace.txt"
+missing "$work/trace.txt" A3.1 A3.2 A3.3 A3.4 A3.5
 for pair in "form_factors=analytic:A5.1" "solver=gauss-seidel:A5.2" "solver=southwell:A5.3"; do
   set_arg=${pair%%:*} task=${pair##*:}
   build/lightlab --quiet radiosity data/scenes/cornell_box.json --set patch_size=0.2 --set hemicube_res=8 \
