@@ -8,6 +8,7 @@
 #include <tbb/global_control.h>
 
 #include "core/error.h"
+#include "tasks/crash_report.h"
 #include "tasks/task_catalog.h"
 #include "tasks/task_modes.h"
 
@@ -42,6 +43,7 @@ CommandLine::CommandLine() {
 
 int runCommandLine(int argc, const char* const* argv) {
   CommandLine cl;
+  if (tasks::modulesEnabled()) tasks::installCrashReport();  // a crash in student code names its task
   try {
     cl.app.parse(argc, argv);
     std::unique_ptr<tbb::global_control> threads;

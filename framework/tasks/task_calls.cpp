@@ -38,6 +38,8 @@ StudentCall::~StudentCall() {
 
 bool StudentCall::stubRan() const { return tStubRan; }
 
+int innermostStudentTask() { return tInnermost; }
+
 bool studentCodeRunning(int task) { return task >= 0 && tRunning[static_cast<size_t>(task)] > 0; }
 
 void noteStubRan(const char* id) {

@@ -35,6 +35,8 @@ class LIGHTLAB_FRAMEWORK_ONLY StudentCall {
 
 // Whether `task`'s student code is running on this thread.
 LIGHTLAB_FRAMEWORK_ONLY bool studentCodeRunning(int task);
+// The task whose student code this thread runs innermost, or -1 (async-signal-safe: crash_report.h).
+LIGHTLAB_FRAMEWORK_ONLY int innermostStudentTask();
 
 // Called by the dispatch on every call of a task function (any mode): what a
 // test uses, for the handouts' "builds on" lists, and in the render's task log

@@ -3,7 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include <csignal>
+
 #include "render/student_task.h"
+#include "tasks/crash_report.h"
 #include "tasks/task_catalog.h"
 
 namespace ll::tasks {
@@ -29,6 +32,27 @@ TEST(StudentCall, AnotherTasksStubReportIsNotThisCallsStub) {
   // What the reports left on this thread and process, cleared for the tests after this one.
   takeStubFlag();
   takeTasksReported();
+}
+
+// A crash in a task's student code, on the command line: one line naming the task and its file, then
+// the process dies of the same signal (the grader's child processes report the signal, now with that
+// line); a crash outside student code says nothing more than before.
+TEST(CrashReportDeathTest, ACrashInStudentCodeNamesTheTaskAndStillDiesOfTheSignal) {
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  EXPECT_EXIT(
+      {
+        installCrashReport();
+        StudentCall depth(requireTask("A1.3"));
+        std::raise(SIGSEGV);
+      },
+      testing::KilledBySignal(SIGSEGV),
+      "lightlab: error: A1.3: your code in assignments/a1_rasterizer/.*\\.cpp crashed \\(segmentation fault");
+  EXPECT_EXIT(
+      {
+        installCrashReport();
+        std::raise(SIGFPE);
+      },
+      testing::KilledBySignal(SIGFPE), "^$");
 }
 
 }  // namespace
