@@ -95,6 +95,13 @@ README
 sed -i 's/^option(LIGHTLAB_SOLUTION \(".*"\) ON)/option(LIGHTLAB_SOLUTION \1 OFF)/' "$out/CMakeLists.txt"
 grep -q 'option(LIGHTLAB_SOLUTION .* OFF)' "$out/CMakeLists.txt" || { echo "make_student_tree: could not flip LIGHTLAB_SOLUTION" >&2; exit 1; }
 
+# The top README's command that makes this tree: the script is the instructor's, not in this tree.
+sed -i '/^# Make the student tree:/,/^bash assignments\/make_student_tree.sh/d' "$out/README.md"
+if grep -q '^bash assignments/make_student_tree.sh' "$out/README.md"; then
+  echo "make_student_tree: the README's make_student_tree command is still in the student tree" >&2
+  exit 1
+fi
+
 cat > "$out/NOTICE-STUDENTS.md" <<'NOTICE'
 # For students
 

@@ -37,6 +37,9 @@ bool rayTriangle(const Ray& ray, const Vec3& p0, const Vec3& p1, const Vec3& p2,
 // lecture writes it:  kd (I/r^2) max(0, n.l) + ks (I/r^2) max(0, n.h)^p,
 // with h = (v + l) / |v + l|. Directional lights have no 1/r^2 falloff
 // (light.distance is infinite). The ambient term ka Ia is added by raycast.cpp.
+// Each term is clamped on its own: a light just behind the surface (n.l <= 0)
+// still gives the specular term while n.h > 0 -- unlike A1.4, which drops both
+// terms there; the tests check the lecture's formula as written.
 struct ShadingInput {
   Vec3 n;           // unit shading normal, on the viewer's side
   Vec3 v;           // unit direction from the point to the eye

@@ -430,6 +430,8 @@ TEST_F(A2_4_BlinnPhong, LightBelowTheSurfaceHasNoDiffuse) {
   // n.h^2 = 0.04 / 0.4 = 0.1, so with p = 2 it is ks * I * 0.1.
   const Rgb L = a2::blinnPhong(surface({0, 0, 1}, {0, 0, 1}, Rgb(0.9f), Rgb(0.5f), 2.0f),
                                light({0.6f, 0.0f, -0.8f}, 1.0f, Rgb(1.0f)));
+  SCOPED_TRACE("light below the surface (n.l = -0.8): diffuse 0, but the specular term max(0, n.h)^p stays "
+               "(ks I 0.1 = 0.05); A2.4 clamps each term on its own, unlike A1.4");
   expectVecNear(L, Rgb(0.05f), 1e-6f);
   // With the half vector also below the surface, nothing at all.
   const Rgb none = a2::blinnPhong(surface({0, 0, 1}, {0.8f, 0, 0.6f}, Rgb(0.9f), Rgb(0.5f), 2.0f),

@@ -44,7 +44,8 @@ nlohmann::json treeJson(const RayTree& tree) {
     } else if (!n.intersected) {
       j["traced"] = false;  // stopped by the depth or weight limit
     } else if (!n.hit) {
-      j["hit"] = nullptr;  // the background
+      j["hit"] = nullptr;  // the background: what it adds to the pixel, as a hit's contribution
+      j["contribution"] = vec(n.throughput * n.radiance);
     } else {
       j["hit"] = {{"t", n.t},
                   {"position", vec(n.position)},
@@ -80,12 +81,19 @@ void printTree(const RayTree& tree) {
     else if (!n.intersected)
       std::printf(": not traced (depth or weight limit)\n");
     else if (!n.hit)
-      std::printf(": background, weight %.3g\n", static_cast<double>(maxComponent(n.throughput)));
-    else
-      std::printf(": %s (%s) at t = %.4g, weight %.3g, contributes %.4g%s\n", n.object.c_str(), n.material.c_str(),
+      std::printf(": background, weight %.3g, contributes %.4g\n", static_cast<double>(maxComponent(n.throughput)),
+                  static_cast<double>(maxComponent(n.throughput * n.radiance)));
+    else {
+      // Where the ray enters or leaves glass: the indices on both sides and the Fresnel split.
+      char fresnel[96] = "";
+      if (n.fresnel)
+        std::snprintf(fresnel, sizeof fresnel, ", n %.3g -> %.3g, Fresnel %.3g reflected", static_cast<double>(n.n1),
+                      static_cast<double>(n.n2), static_cast<double>(*n.fresnel));
+      std::printf(": %s (%s) at t = %.4g, weight %.3g, contributes %.4g%s%s\n", n.object.c_str(), n.material.c_str(),
                   static_cast<double>(n.t), static_cast<double>(maxComponent(n.throughput)),
-                  static_cast<double>(maxComponent(n.contribution)),
+                  static_cast<double>(maxComponent(n.contribution)), fresnel,
                   n.totalInternalReflection ? ", total internal reflection" : "");
+    }
   }
 }
 
