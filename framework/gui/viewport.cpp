@@ -67,8 +67,9 @@ struct PaneLayout {
 float captionHeight(const std::vector<std::string>& lines, float width);  // below
 
 // The caption where it hides no picture: beside it when the cell has the width to spare, or would
-// after the picture shrinks to 85 % (a tall cell: panes stacked in a narrow viewport); else above
-// it when the cell has the height (a wide picture in a tall cell), the two centred together; else
+// after the picture shrinks to 75 % of its width (a tall cell: panes stacked in a narrow viewport;
+// a smaller picture reads better than one whose middle is under five lines of text); else above it
+// when the cell has the height (a wide picture in a tall cell), the two centred together; else
 // over the picture's top. smallTiles (the light-path view's mosaic): above even if the picture
 // shrinks more. aboveAtLeast: the height kept above the picture at least (the tallest caption of
 // the panes, so that pictures side by side stay level). No caption lines: the whole cell is the
@@ -81,7 +82,7 @@ PaneLayout layoutPane(Rect cell, int imageW, int imageH, const std::vector<std::
   if (caption.empty()) return out;
   const Rect whole = out.picture;
   const float besideMin = uiPx(190.0f);
-  if (cell.w - 3.0f * margin - besideMin >= 0.85f * whole.w) {
+  if (cell.w - 3.0f * margin - besideMin >= 0.75f * whole.w) {
     const float width = std::clamp(cell.w - whole.w - 3.0f * margin, besideMin, uiPx(320.0f));
     Rect& r = out.picture;
     r = fitImage({cell.x, cell.y, cell.w - width - margin, cell.h}, imageW, imageH, margin);
@@ -332,14 +333,17 @@ float captionHeight(const std::vector<std::string>& lines, float width) {
   return height + 2.0f;
 }
 
-// The banner under the image rectangle r, `width` wide from r.x (the space was
-// kept free: bannerSpace), and a failed render's error over the image.
-void paneBanners(ImDrawList* dl, AppState& app, int index, Rect r, float x, float width) {
+// The banner under the image rectangle r, `width` wide from x (the space was
+// kept free: bannerSpace), and a failed render's error over the image. An
+// unfolded banner taller than that space rises over the picture's bottom
+// rather than run past `bottom` (the cell's), where it would be cut.
+void paneBanners(ImDrawList* dl, AppState& app, int index, Rect r, float x, float width, float bottom) {
   const PaneState& p = app.panes[static_cast<size_t>(index)];
   const auto lines = bannerLinesAt(app, p, width);
   if (!lines.empty()) {
-    const float h = captionBox(app.overlayRects, dl, x, r.y + r.h + 2.0f, lines, IM_COL32(150, 20, 120, 230), width);
-    app.widgetRects[std::string("pane.") + paneLetter(index) + ".banner"] = {x, r.y + r.h + 2.0f, width, h};
+    const float top = std::max(std::min(r.y + r.h + 2.0f, bottom - captionHeight(lines, width)), r.y);
+    const float h = captionBox(app.overlayRects, dl, x, top, lines, IM_COL32(150, 20, 120, 230), width);
+    app.widgetRects[std::string("pane.") + paneLetter(index) + ".banner"] = {x, top, width, h};
   }
   if (p.shown.phase == PaneSnapshot::Phase::Failed) {
     const float h = ImGui::GetTextLineHeight() + 8.0f;
@@ -348,9 +352,10 @@ void paneBanners(ImDrawList* dl, AppState& app, int index, Rect r, float x, floa
   }
 }
 
-// The height to keep free under a pane's picture, `width` wide, for its banner.
-float bannerSpace(const AppState& app, const PaneState& p, float width) {
-  return captionHeight(bannerLinesAt(app, p, width), width);
+// The height to keep free under a pane's picture, `width` wide, for its banner: all of it, up to
+// `most` (an unfolded banner's list of stubs would leave a thumbnail of the picture).
+float bannerSpace(const AppState& app, const PaneState& p, float width, float most = kInfinity) {
+  return std::min(captionHeight(bannerLinesAt(app, p, width), width), most);
 }
 
 // Uploads bytes the background worker finished since the last frame.
@@ -431,7 +436,8 @@ Rect compareArea(const AppState& app, Rect area) {
       app.compare.mode == CompareMode::Difference ? uiPx(40.0f) : 0.0f;
   const PaneState& b = app.panes[static_cast<size_t>(app.compare.paneB)];
   const float banners = app.compare.mode == CompareMode::Wipe
-                            ? std::max(bannerSpace(app, a, area.w / 2), bannerSpace(app, b, area.w / 2))
+                            ? std::max(bannerSpace(app, a, area.w / 2, 0.3f * area.h),
+                                       bannerSpace(app, b, area.w / 2, 0.3f * area.h))
                             : 0.0f;
   return fitImage({area.x, area.y, area.w, area.h - legend - banners}, w, h, 8.0f);
 }
@@ -596,7 +602,8 @@ void drawViewportContent(AppState& app, float x, float y, float w, float h) {
       PaneState& p = app.panes[static_cast<size_t>(i)];
       Rect cell = cellOf(i, app.paneCount, area);
       const float bannerW = cell.w - 12.0f;  // the banner spans the cell, under the picture
-      cell.h = std::max(cell.h - bannerSpace(app, p, bannerW), 1.0f);
+      const float cellBottom = cell.y + cell.h;
+      cell.h = std::max(cell.h - bannerSpace(app, p, bannerW, 0.3f * cell.h), 1.0f);
       const bool current = imageOnScreen(p);
       const RenderSettings size = app.scene ? renderSettings(app, p) : RenderSettings{};
       const int imageW = current ? p.texture.width() : size.width, imageH = current ? p.texture.height() : size.height;
@@ -632,7 +639,7 @@ void drawViewportContent(AppState& app, float x, float y, float w, float h) {
                    layout.captionWidth);
       else
         caption(i, r, r.w);
-      paneBanners(dl, app, i, r, cell.x + 6.0f, bannerW);
+      paneBanners(dl, app, i, r, cell.x + 6.0f, bannerW, cellBottom);
     }
     return;
   }
@@ -667,8 +674,8 @@ void drawViewportContent(AppState& app, float x, float y, float w, float h) {
       bw = std::min(bw, r.w / 2);
       captionBox(app.overlayRects, dl, r.x + r.w - bw, r.y, lines, IM_COL32(0, 0, 0, 170), bw);
     }
-    paneBanners(dl, app, ia, {r.x, r.y, r.w / 2, r.h}, r.x, r.w / 2);
-    paneBanners(dl, app, ib, {r.x + r.w / 2, r.y, r.w / 2, r.h}, r.x + r.w / 2, r.w / 2);
+    paneBanners(dl, app, ia, {r.x, r.y, r.w / 2, r.h}, r.x, r.w / 2, area.y + area.h);
+    paneBanners(dl, app, ib, {r.x + r.w / 2, r.y, r.w / 2, r.h}, r.x + r.w / 2, r.w / 2, area.y + area.h);
     return;
   }
 

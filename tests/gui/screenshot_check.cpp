@@ -33,7 +33,7 @@ using ll::Rgb;
 using Rect = std::array<double, 4>;  // x, y, w, h in screenshot pixels
 
 constexpr int kGrid = 12;                 // blocks per side
-constexpr double kBlockTolerance = 0.04;  // max |mean sRGB difference| per block and channel
+constexpr double kBlockTolerance = 0.025;  // max |mean sRGB difference| per block and channel (8-bit: 0.004 a step)
 constexpr double kMinSpread = 0.02;       // a region whose block means all lie within this is "uniform"
 
 [[noreturn]] void fail(const std::string& why) {
@@ -71,11 +71,41 @@ Image srgbOf(const Image& linear) {
   return out;
 }
 
+// The reference as the GUI shows it over the screen pixels with centres inside [x0,x1) x [y0,y1) of
+// `region`: each pixel centre mapped into columns [u0,u1) of `reference`, sampled as the texture is
+// (GL_NEAREST when magnified, GL_LINEAR when minified), and averaged. Comparing block means of the
+// two then does not depend on where block edges fall between the image's pixels.
+Rgb shownMean(const Image& reference, double u0, double u1, const Rect& region, double x0, double y0, double x1,
+              double y1) {
+  const double rw = (u1 - u0) * reference.width(), rh = reference.height();
+  const bool magnified = region[2] >= rw;
+  const auto at = [&](int x, int y) {
+    return reference.at(std::clamp(x, 0, reference.width() - 1), std::clamp(y, 0, reference.height() - 1));
+  };
+  Rgb sum(0.0f);
+  int n = 0;
+  for (int y = static_cast<int>(std::ceil(y0 - 0.5)); y + 0.5 < y1; ++y)
+    for (int x = static_cast<int>(std::ceil(x0 - 0.5)); x + 0.5 < x1; ++x) {
+      const double px = u0 * reference.width() + (x + 0.5 - region[0]) / region[2] * rw;  // reference pixels
+      const double py = (y + 0.5 - region[1]) / region[3] * rh;
+      if (magnified) {
+        sum += at(static_cast<int>(std::floor(px)), static_cast<int>(std::floor(py)));
+      } else {
+        const double fx = px - 0.5, fy = py - 0.5;
+        const int ix = static_cast<int>(std::floor(fx)), iy = static_cast<int>(std::floor(fy));
+        const float tx = static_cast<float>(fx - ix), ty = static_cast<float>(fy - iy);
+        sum += (at(ix, iy) * (1 - tx) + at(ix + 1, iy) * tx) * (1 - ty) +
+               (at(ix, iy + 1) * (1 - tx) + at(ix + 1, iy + 1) * tx) * ty;
+      }
+      ++n;
+    }
+  return n > 0 ? sum / static_cast<float>(n) : Rgb(-1.0f);
+}
+
 // Compares `region` of the screenshot with columns [u0,u1) of `reference` (both sRGB).
 void compareRegion(const Image& shot, const Rect& region, const Image& reference, double u0, double u1,
                    const std::vector<Rect>& overlays, const std::string& what) {
   if (region[2] < kGrid || region[3] < kGrid) fail(what + ": region too small or not drawn");
-  const double rx0 = u0 * reference.width(), rw = (u1 - u0) * reference.width();
   int compared = 0, bad = 0;
   double worst = 0.0, lo = 1e9, hi = -1e9;
   for (int by = 0; by < kGrid; ++by)
@@ -86,8 +116,7 @@ void compareRegion(const Image& shot, const Rect& region, const Image& reference
                        (fy1 - fy0) * region[3]};
       if (std::any_of(overlays.begin(), overlays.end(), [&](const Rect& o) { return overlaps(block, o); })) continue;
       const Rgb s = blockMean(shot, block[0], block[1], block[0] + block[2], block[1] + block[3]);
-      const Rgb r = blockMean(reference, rx0 + fx0 * rw, fy0 * reference.height(), rx0 + fx1 * rw,
-                              fy1 * reference.height());
+      const Rgb r = shownMean(reference, u0, u1, region, block[0], block[1], block[0] + block[2], block[1] + block[3]);
       if (s.r < 0 || r.r < 0) continue;
       ++compared;
       const double err = std::max({std::abs(s.r - r.r), std::abs(s.g - r.g), std::abs(s.b - r.b)});
