@@ -260,6 +260,21 @@ void PaneRenderer::render(const RenderRequest& request, uint64_t id) {
     // Until the technique reports its own phases (radiosity's form factors) and the job its first pass.
     setPhase(id, preview ? "preview" : "preparing " + techInfo.name, -1.0);
     const Timer timer;
+    // A render that fails (a crash in student code) keeps which tasks it ran, for the side panel and the
+    // banner: the task that crashed was run by this pane, not "not run by these panes".
+    struct KeepTasksOnFailure {
+      PaneRenderer* self;
+      PaneSnapshot& s;
+      const RenderJob& job;
+      ~KeepTasksOnFailure() {
+        if (std::uncaught_exceptions() == 0) return;
+        s.tasksRan = job.taskLog().ran();
+        s.missingTasks = job.taskLog().missing();
+        s.exactFallbacks = job.taskLog().exact();
+        s.taskViolations = job.taskLog().violations();
+        self->publish(s);
+      }
+    } keepTasks{this, s, job};
     job.run([&](int done, int total) {
       s.lightPathTiles.clear();
       if (request.view == PaneView::LightPaths && job.frame().keepsLightPaths()) {

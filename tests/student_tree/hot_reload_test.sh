@@ -110,6 +110,9 @@ awk '{print} /blinnPhong\(/ && !done {print "  volatile int* volatile nowhere = 
 save crash.cpp
 until_shot s5 "j['reload']['reloads'] >= 2 and j['panes'][0]['phase'] == 'failed'" 300
 q s5.json "j['panes'][0]['error']" | grep -q "A2.4.*crashed" || fail "pane A's error does not name A2.4's crash: $(q s5.json "j['panes'][0]['error']")"
+# The side panel still knows the pane ran A2.4 (it said "not run by these panes" after a crash).
+[ "$(q s5.json "'A2.4' in j['panes'][0]['tasks_ran']")" = True ] ||
+  fail "after the crash pane A's tasks_ran lost A2.4: $(q s5.json "j['panes'][0]['tasks_ran']")"
 echo "ok: a segfault in blinnPhong stopped pane A only: $(q s5.json "j['panes'][0]['error']")"
 
 # 5. Fixed again: the picture is back.
