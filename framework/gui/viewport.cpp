@@ -228,8 +228,8 @@ std::vector<std::string> paneCaption(const AppState& app, int index, const std::
     case PaneSnapshot::Phase::Rendering:
     case PaneSnapshot::Phase::Done: {
       lines.push_back(phaseLine(s));
-      // Where the time went, once more than the passes took it.
-      // Only the parts that took time: a narrow pane wraps this line, and every line hides picture.
+      // Where the time went, once more than the passes took it; only the parts that took time (a
+      // narrow pane wraps this line, and every line takes room from the picture).
       if (s.phase == PaneSnapshot::Phase::Done && s.seconds - s.passSeconds > 0.05) {
         std::string line = "time:";
         for (const auto& [name, seconds] : {std::pair{"build", s.requestBuildSeconds}, {"preview", s.previewSeconds},

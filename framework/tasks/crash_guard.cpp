@@ -1,6 +1,7 @@
 #include "tasks/crash_guard.h"
 
 #include "render/student_task.h"
+#include "tasks/crash_report.h"
 
 #include <array>
 #include <atomic>
@@ -57,15 +58,7 @@ void prepareThread() {
   (void)stack;
 }
 
-std::string signalName(int signal) {
-  switch (signal) {
-    case SIGSEGV: return "segmentation fault: a bad pointer or index, or endless recursion";
-    case SIGBUS: return "bus error: a bad pointer";
-    case SIGFPE: return "arithmetic exception: an integer division by zero";
-    case SIGILL: return "illegal instruction: a function that returns no value?";
-  }
-  return "signal " + std::to_string(signal);
-}
+std::string signalName(int signal) { return signalMeaning(signal); }
 
 }  // namespace detail
 

@@ -4,7 +4,6 @@
 
 #include <atomic>
 #include <csignal>
-#include <cstring>
 
 #include "tasks/task_calls.h"
 #include "tasks/task_catalog.h"
@@ -14,16 +13,6 @@ namespace ll::tasks {
 namespace {
 
 constexpr int kSignals[] = {SIGSEGV, SIGBUS, SIGFPE, SIGILL};
-
-const char* meaning(int signal) {
-  switch (signal) {
-    case SIGSEGV: return "segmentation fault: a bad pointer or index, or endless recursion";
-    case SIGBUS: return "bus error: a bad pointer";
-    case SIGFPE: return "arithmetic exception: an integer division by zero";
-    case SIGILL: return "illegal instruction: a function that returns no value?";
-  }
-  return "a fatal signal";
-}
 
 // Appends `text` to the buffer at `end` (async-signal-safe: no allocation), never past `last`.
 char* append(char* end, const char* last, const char* text) {
@@ -39,7 +28,7 @@ void onFatalSignal(int signal) {
     const char* last = line + sizeof line - 1;
     char* end = line;
     for (const char* part : {"lightlab: error: ", t.id, ": your code in assignments/", t.folder, "/", t.file,
-                             " crashed (", meaning(signal), "); this run stopped. --reference ", t.id,
+                             " crashed (", signalMeaning(signal), "); this run stopped. --reference ", t.id,
                              " runs its reference instead.\n"})
       end = append(end, last, part);
     [[maybe_unused]] const ssize_t written = write(STDERR_FILENO, line, static_cast<size_t>(end - line));
@@ -49,6 +38,16 @@ void onFatalSignal(int signal) {
 }
 
 }  // namespace
+
+const char* signalMeaning(int signal) {
+  switch (signal) {
+    case SIGSEGV: return "segmentation fault: a bad pointer or index, or endless recursion";
+    case SIGBUS: return "bus error: a bad pointer";
+    case SIGFPE: return "arithmetic exception: an integer division by zero";
+    case SIGILL: return "illegal instruction: a function that returns no value?";
+  }
+  return "a fatal signal";
+}
 
 void installCrashReport() {
   static std::atomic<bool> installed{false};

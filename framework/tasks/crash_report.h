@@ -17,4 +17,8 @@ namespace ll::tasks {
 // Installs the handlers (idempotent). crash_guard.h's handlers, installed after, take over.
 LIGHTLAB_FRAMEWORK_ONLY void installCrashReport();
 
+// What a fatal signal in student code usually means, for the student ("segmentation fault: a bad
+// pointer or index, or endless recursion"); a static string (async-signal-safe).
+LIGHTLAB_FRAMEWORK_ONLY const char* signalMeaning(int signal);
+
 }  // namespace ll::tasks
