@@ -31,6 +31,7 @@
 #include <nlohmann/json.hpp>
 
 #include "render/student_task.h"
+#include "tasks/crash_report.h"
 #include "tasks/task_calls.h"
 #include "tasks/task_catalog.h"
 #include "tasks/task_modes.h"
@@ -184,6 +185,8 @@ class CappedPrinter : public testing::EmptyTestEventListener {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // A crash in a test names the task whose code crashed (the grader shows the program's last output).
+  if (ll::tasks::modulesEnabled()) ll::tasks::installCrashReport();
   openChannel();
   testing::InitGoogleTest(&argc, argv);
   // The harness before the printer, so that its failures show in the test's verdict.

@@ -373,7 +373,7 @@ class Grader {
         r.name = t.id + " " + running;
         r.status = Status::Failed;
         const std::string how = run.timedOut ? "did not finish within " + fmt(perTest) + " s (an endless loop?)"
-                                : run.signal ? "crashed the test program: " + run.describe()
+                                : run.signal ? "stopped the test program: " + run.describe()
                                              : "ended the test program (" + run.describe() + "; a call to exit()?)";
         r.message = t.id + ": " + running + " " + how;
         r.details = "The test program's last output:\n" + tail(run.output, 3000);
