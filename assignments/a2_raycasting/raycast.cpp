@@ -40,16 +40,54 @@ class Raycast final : public PixelTechnique {
     }
   }
 
+  // `lightlab trace --pixel X Y -t raycast`: the camera ray (your A2.1, hit by your A2.2/A2.3 where the
+  // render uses them) and one shadow ray per light sample, each with the Blinn-Phong term it adds (your
+  // A2.4, A2.5); the camera ray's own share is emission and ambient. The shares add up to the pixel.
+  std::optional<RayTree> rayTree(const RenderContext& ctx, Vec2 position) const override {
+    WorkCounters counters;
+    const Tracer tracer(ctx.scene, accelerator(ctx), counters);
+    // The random stream of the pixel's first sample, as the render draws it.
+    const auto pixel = static_cast<uint64_t>(std::floor(position.y)) * static_cast<uint64_t>(camera_.width) +
+                       static_cast<uint64_t>(std::floor(position.x));
+    Rng rng = Rng::forPixel(ctx.settings.seed, pixel, 0);
+    PixelSample s;
+    s.x = static_cast<int>(std::floor(position.x));
+    s.y = static_cast<int>(std::floor(position.y));
+    s.position = position;
+    s.rng = &rng;
+    RayTree tree;
+    tree.pixel = sample(ctx, s, tracer, &tree);
+    return tree;
+  }
+
  protected:
   const Accelerator& accelerator(const RenderContext& ctx) const override {
     return student_ ? *student_ : ctx.accel;
   }
 
   Rgb renderSample(const RenderContext& ctx, const PixelSample& s, const Tracer& tracer) const override {
+    return sample(ctx, s, tracer, nullptr);
+  }
+
+ private:
+  // The sample's radiance; with `tree`, its rays recorded there too.
+  Rgb sample(const RenderContext& ctx, const PixelSample& s, const Tracer& tracer, RayTree* tree) const {
     const Scene& scene = ctx.scene;
     Ray ray = a2::cameraRay(camera_, s.position.x, s.position.y);
     Hit hit;
-    if (!tracer.intersect(ray, hit, RayKind::Camera)) return scene.environment.radiance(glm::normalize(ray.dir));
+    const bool found = tracer.intersect(ray, hit, RayKind::Camera);
+    if (tree) {
+      RayTreeNode camera;
+      camera.origin = ray.origin;
+      camera.direction = glm::normalize(ray.dir);
+      camera.intersected = true;
+      tree->nodes.push_back(camera);
+    }
+    if (!found) {
+      const Rgb background = scene.environment.radiance(glm::normalize(ray.dir));
+      if (tree) tree->nodes[0].radiance = background;
+      return background;
+    }
     SurfacePoint sp = scene.surfacePoint(ray, hit);
     const Material& m = *sp.material;
     const Vec3 v = -glm::normalize(ray.dir);
@@ -61,6 +99,17 @@ class Raycast final : public PixelTechnique {
     Rgb radiance = frontFace ? m.emission : Rgb(0.0f);  // emitters emit on their front side
     radiance += m.ka * scene.ambient;                    // the lecture's ka * Ia
     const a2::ShadingInput surface{sp.shadingNormal, v, m.diffuse(sp.uv), m.ks, m.shininess};
+    if (tree) {
+      RayTreeNode& camera = tree->nodes[0];
+      camera.hit = true;
+      camera.t = hit.t;
+      camera.position = sp.position;
+      camera.normal = sp.shadingNormal;
+      camera.object = scene.objects[sp.object].name;
+      camera.material = m.name;
+      camera.entering = frontFace;
+      camera.local = camera.contribution = radiance;  // emission and ambient; the lights' terms follow
+    }
 
     for (const Light& light : scene.lights) {
       a2::LightInput in{};
@@ -73,7 +122,7 @@ class Raycast final : public PixelTechnique {
         in.distance = kInfinity;
         in.l = -light.direction;
       }
-      radiance += shade(scene, tracer, sp, surface, in, light.canBeOccluded);
+      radiance += shade(scene, tracer, sp, surface, in, light.canBeOccluded, tree);
     }
 
     for (const AreaLight& light : scene.areaLights) {
@@ -88,22 +137,38 @@ class Raycast final : public PixelTechnique {
         const float cosLight = glm::dot(lp.normal, -in.l);
         if (cosLight <= 0.0f) continue;  // behind the emitting side
         in.intensity = lp.emission * (light.area / static_cast<float>(lightSamples_)) * cosLight / kPi;
-        radiance += shade(scene, tracer, sp, surface, in, light.canBeOccluded);
+        radiance += shade(scene, tracer, sp, surface, in, light.canBeOccluded, tree);
       }
     }
+    if (tree) tree->nodes[0].radiance = radiance;
     return radiance;
   }
 
- private:
-  // One light's Blinn-Phong term, if the light is in front of the surface and visible.
+  // One light's Blinn-Phong term, if the light is in front of the surface and visible; with `tree`, its
+  // shadow ray recorded there with the term as its contribution (a light without one: a shadow-free ray).
   Rgb shade(const Scene& scene, const Tracer& tracer, const SurfacePoint& sp, const a2::ShadingInput& surface,
-            const a2::LightInput& light, bool castShadow) const {
+            const a2::LightInput& light, bool castShadow, RayTree* tree) const {
     if (glm::dot(sp.geometricNormal, light.l) <= 0.0f) return Rgb(0.0f);  // the surface itself blocks it
-    if (!castShadow) return a2::blinnPhong(surface, light);
-    const Ray shadow = a2::shadowRay(sp, light.l, light.distance);
-    if (!filtered_) return tracer.occluded(shadow) ? Rgb(0.0f) : a2::blinnPhong(surface, light);
-    const Rgb through = filteredShadowTransmittance(scene, tracer, shadow, Media{});
-    return isBlack(through) ? Rgb(0.0f) : through * a2::blinnPhong(surface, light);
+    Rgb through(1.0f);  // how much of the light arrives
+    Ray shadow;
+    if (castShadow) {
+      shadow = a2::shadowRay(sp, light.l, light.distance);
+      through = !filtered_ ? (tracer.occluded(shadow) ? Rgb(0.0f) : Rgb(1.0f))
+                           : filteredShadowTransmittance(scene, tracer, shadow, Media{});
+    }
+    const Rgb term = isBlack(through) ? Rgb(0.0f) : through * a2::blinnPhong(surface, light);
+    if (tree) {
+      RayTreeNode n;
+      n.kind = RayKind::Shadow;
+      n.parent = 0;
+      n.origin = castShadow ? shadow.origin : sp.position;
+      n.direction = light.l;
+      n.intersected = true;
+      n.shadowTransmittance = through;
+      n.contribution = term;
+      tree->nodes.push_back(n);
+    }
+    return term;
   }
 
   Camera camera_;

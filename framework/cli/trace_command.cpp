@@ -1,7 +1,8 @@
 // lightlab trace SCENE (--pixel X Y | --ray OX OY OZ DX DY DZ) [-t ..] [-a ..] [--json]
 // Prints the closest hit of one ray: t, object, primitive, barycentrics,
-// position, normals and material; with --pixel and a recursive technique
-// (-t whitted), also the whole ray tree of the pixel's sample.
+// position, normals and material; with --pixel and a technique that traces
+// (-t raycast: the camera ray and its shadow rays with each light's term;
+// -t whitted: the recursion), also the ray tree of the pixel's sample.
 #include <cstdio>
 #include <iostream>
 #include <set>
@@ -41,6 +42,7 @@ nlohmann::json treeJson(const RayTree& tree) {
                         {"throughput", vec(n.throughput)}};
     if (n.kind == RayKind::Shadow) {
       j["light_transmittance"] = vec(n.shadowTransmittance);
+      if (!isBlack(n.contribution)) j["contribution"] = vec(n.contribution);  // raycast: the light's shading term
     } else if (!n.intersected) {
       j["traced"] = false;  // stopped by the depth or weight limit
     } else if (!n.hit) {
@@ -76,8 +78,10 @@ void printTree(const RayTree& tree) {
     const RayTreeNode& n = tree.nodes[i];
     indent[i] = n.parent < 0 ? 0 : indent[static_cast<size_t>(n.parent)] + 1;
     std::printf("%*s%s", 2 * indent[i] + 2, "", std::string(kRayKindNames[static_cast<size_t>(n.kind)]).c_str());
-    if (n.kind == RayKind::Shadow)
+    if (n.kind == RayKind::Shadow && isBlack(n.contribution))
       std::printf(": light %s\n", isBlack(n.shadowTransmittance) ? "blocked" : "visible");
+    else if (n.kind == RayKind::Shadow)  // raycast: the light's Blinn-Phong term is this ray's share
+      std::printf(": light visible, contributes %.4g\n", static_cast<double>(maxComponent(n.contribution)));
     else if (!n.intersected)
       std::printf(": not traced (depth or weight limit)\n");
     else if (!n.hit)
