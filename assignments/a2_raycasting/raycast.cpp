@@ -12,6 +12,7 @@
 // of intensity I = Le * (A / N) * cos(theta_light) / pi each, which makes the
 // diffuse term the physically right (kd / pi) * E. Framework code: students
 // write the functions in a2_tasks.h, which this file calls.
+#include <cmath>
 #include <memory>
 
 #include "a2_tasks.h"
@@ -163,6 +164,7 @@ class Raycast final : public PixelTechnique {
       n.parent = 0;
       n.origin = castShadow ? shadow.origin : sp.position;
       n.direction = light.l;
+      n.t = std::isfinite(light.distance) ? light.distance : 0.0f;  // to the light (0: a directional one)
       n.intersected = true;
       n.shadowTransmittance = through;
       n.contribution = term;

@@ -303,7 +303,16 @@ TEST(AppActions, AClickedPixelOfAWhittedPaneGetsItsRayTreeAndFollowsTheCamera) {
   refreshRayTree(app);
   ASSERT_TRUE(app.inspector.tree.has_value());
   EXPECT_NE(app.inspector.tree->nodes[0].origin, first.nodes[0].origin);
-  // A technique without recursion says so instead of drawing nothing silently.
+  // Ray casting's tree: the camera ray and its shadow rays, whose shares add up to the pixel.
+  inspectPixel(app, 1, Vec2(10.5f, 10.5f));
+  refreshRayTree(app);
+  ASSERT_TRUE(app.inspector.tree.has_value()) << app.inspector.note;
+  Rgb shares(0.0f);
+  for (const RayTreeNode& n : app.inspector.tree->nodes) shares += n.contribution;
+  EXPECT_NEAR(shares.r, app.inspector.tree->pixel.r, 1e-5f * (1.0f + app.inspector.tree->pixel.r));
+  // A technique without one says so instead of drawing nothing silently.
+  setTechnique(app, 1, "blinn-phong");
+  waitPanes(app);
   inspectPixel(app, 1, Vec2(10.5f, 10.5f));
   refreshRayTree(app);
   EXPECT_FALSE(app.inspector.tree.has_value());

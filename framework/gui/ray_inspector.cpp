@@ -67,7 +67,7 @@ void refreshRayTree(AppState& app) {
       technique->prepare(ctx);
       in.tree = technique->rayTree(ctx, in.pixel);
     }
-    in.note = in.tree ? "" : p.technique + " does not trace recursively: choose whitted for a ray tree";
+    in.note = in.tree ? "" : p.technique + " draws no ray tree: choose raycast (its camera and shadow rays) or whitted";
   } catch (const std::exception& e) {
     in.note = e.what();
   }
@@ -103,7 +103,7 @@ void rayTreeSection(AppState& app) {
   if (!ImGui::CollapsingHeader("Ray tree", ImGuiTreeNodeFlags_DefaultOpen)) return;
   RayInspector& in = app.inspector;
   if (in.pane < 0) {
-    ImGui::TextWrapped("Click a pixel of a whitted pane (without dragging) to see its ray tree.");
+    ImGui::TextWrapped("Click a pixel of a raycast or whitted pane (without dragging) to see its rays.");
     return;
   }
   ImGui::Text("pane %c, pixel (%d, %d)", static_cast<char>('A' + in.pane), static_cast<int>(in.pixel.x),
