@@ -18,9 +18,9 @@
 
 #include "cli/commands.h"
 #include "cli/scene_setup.h"
+#include "cli/task_lines.h"
 #include "core/error.h"
 #include "core/files.h"
-#include "tasks/task_modes.h"
 #include "core/progress.h"
 #include "radiosity_scene.h"
 
@@ -154,9 +154,7 @@ Command addRadiosityCommand(CLI::App& app, const GlobalOptions& global) {
       return;
     }
     const auto solved = a5::solveScene(s.scene, settings);
-    for (const auto& [id, what] : solved->missingTasks)
-      std::fprintf(stderr, "lightlab: %s not implemented: %s -- %s\n", id.c_str(), what.c_str(),
-                   tasks::stubOutcome(id, false, false).c_str());
+    printTaskLines(solved->missingTasks, {}, false);
     const a5::Solution& sol = solved->solution;
     const a5::FormFactorDiagnostics& d = solved->diagnostics();
     const double finalResidual = sol.history.empty() ? 0.0 : sol.history.back().residual;

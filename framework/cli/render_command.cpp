@@ -10,6 +10,7 @@
 
 #include "cli/commands.h"
 #include "cli/scene_setup.h"
+#include "cli/task_lines.h"
 #include "core/error.h"
 #include "core/files.h"
 #include "core/progress.h"
@@ -19,7 +20,6 @@
 #include "render/cost_image.h"
 #include "render/light_path_mosaic.h"
 #include "render/render_job.h"
-#include "tasks/task_modes.h"
 
 namespace ll::cli {
 
@@ -141,13 +141,7 @@ Command addRenderCommand(CLI::App& app, const GlobalOptions& global) {
       out << stats.toJson().dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
     }
     const bool striped = !stats.missingTasks.empty() && job.frame().anyStub();  // one scan of the frame
-    for (const auto& [id, what] : stats.missingTasks)
-      std::fprintf(stderr, "lightlab: %s not implemented: %s -- %s\n", id.c_str(), what.c_str(),
-                   tasks::stubOutcome(id, stats.exactFallbacks.count(id) > 0, striped).c_str());
-    for (const auto& [id, what] : stats.taskViolations)
-      std::fprintf(stderr, "lightlab: %s: %s\n", id.c_str(), what.c_str());
-    if (!stats.referenceTasks.empty())
-      std::fprintf(stderr, "lightlab: by their reference (--reference): %s\n", stats.referenceTasks.c_str());
+    printTaskLines(stats.missingTasks, stats.exactFallbacks, striped, stats.taskViolations, stats.referenceTasks);
     if (s.technique->ignoresLightsOf(s.scene))
       std::fprintf(stderr, "lightlab: %s lights the scene by its emissive surfaces only; the scene's %zu point or "
                    "directional light(s) light nothing here (give an object \"emission\" for an area light)\n",

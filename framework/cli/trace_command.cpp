@@ -5,12 +5,12 @@
 // -t whitted: the recursion), also the ray tree of the pixel's sample.
 #include <cstdio>
 #include <iostream>
-#include <set>
 
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.h"
 #include "cli/scene_setup.h"
+#include "cli/task_lines.h"
 #include "core/error.h"
 #include "render/student_task.h"
 #include "tasks/task_modes.h"
@@ -196,13 +196,7 @@ Command addTraceCommand(CLI::App& app, const GlobalOptions&) {
     }
     if (tree && !o->json) printTree(*tree);
     // On stderr, as render's: the stubs this ray (tree) ran, and whose answer it shows.
-    const std::set<std::string> exact = tasks.exact();
-    for (const auto& [id, what] : tasks.missing())
-      std::fprintf(stderr, "lightlab: %s not implemented: %s -- %s\n", id.c_str(), what.c_str(),
-                   tasks::stubOutcome(id, exact.count(id) > 0, false).c_str());
-    for (const auto& [id, what] : tasks.violations()) std::fprintf(stderr, "lightlab: %s: %s\n", id.c_str(), what.c_str());
-    const std::string references = tasks::referenceList();
-    if (!references.empty()) std::fprintf(stderr, "lightlab: by their reference (--reference): %s\n", references.c_str());
+    printTaskLines(tasks.missing(), tasks.exact(), false, tasks.violations(), tasks::referenceList());
   };
 }
 

@@ -262,19 +262,22 @@ void PaneRenderer::render(const RenderRequest& request, uint64_t id) {
     const Timer timer;
     // A render that fails (a crash in student code) keeps which tasks it ran, for the side panel and the
     // banner: the task that crashed was run by this pane, not "not run by these panes".
+    const auto noteTasks = [&] {
+      s.missingTasks = job.taskLog().missing();
+      s.exactFallbacks = job.taskLog().exact();
+      s.taskViolations = job.taskLog().violations();
+      s.tasksRan = job.taskLog().ran();
+    };
     struct KeepTasksOnFailure {
       PaneRenderer* self;
       PaneSnapshot& s;
-      const RenderJob& job;
+      const decltype(noteTasks)& note;
       ~KeepTasksOnFailure() {
         if (std::uncaught_exceptions() == 0) return;
-        s.tasksRan = job.taskLog().ran();
-        s.missingTasks = job.taskLog().missing();
-        s.exactFallbacks = job.taskLog().exact();
-        s.taskViolations = job.taskLog().violations();
+        note();
         self->publish(s);
       }
-    } keepTasks{this, s, job};
+    } keepTasks{this, s, noteTasks};
     job.run([&](int done, int total) {
       s.lightPathTiles.clear();
       if (request.view == PaneView::LightPaths && job.frame().keepsLightPaths()) {
@@ -309,10 +312,7 @@ void PaneRenderer::render(const RenderRequest& request, uint64_t id) {
         s.prepareSeconds = previewPrepareSeconds + job.stats().prepareSeconds;
         s.passSeconds = job.stats().renderSeconds;
       }
-      s.missingTasks = job.taskLog().missing();
-      s.exactFallbacks = job.taskLog().exact();
-      s.taskViolations = job.taskLog().violations();
-      s.tasksRan = job.taskLog().ran();
+      noteTasks();
       if (!preview && done == 1) lastPassSeconds_ = job.stats().renderSeconds;
       publish(s);
       setPhase(id, preview ? "preview" : "pass", preview ? -1.0 : 0.0);
